@@ -1,0 +1,75 @@
+// Clipping of one triangle against the near plane and the guard band (internal header).
+//
+// Watertightness across clipped neighbours: two triangles that share an edge
+// must create bit-identical vertices where that edge crosses a clip plane.
+// Every intersection is therefore computed from the inside vertex towards the
+// outside one, never in polygon order, so both neighbours evaluate the same
+// expression on the same operands.
+#ifndef PHONGRAST_SRC_CLIPPING_HPP
+#define PHONGRAST_SRC_CLIPPING_HPP
+
+#include <array>
+#include <cstddef>
+
+#include "phongrast/lighting.hpp"
+
+namespace phongrast::detail {
+
+/// What is interpolated across a triangle, per vertex.
+template <typename Real>
+struct Varyings {
+    Vec3<Real> position;  ///< camera space (the eye is the origin)
+    Vec3<Real> normal;    ///< camera space, not necessarily unit after interpolation
+    Vec3<Real> color;     ///< surface colour c
+    Vec3<Real> lit;       ///< Gouraud: the lit vertex colour; flat: the triangle's colour
+};
+
+template <typename Real>
+Varyings<Real> lerp(const Varyings<Real>& a, const Varyings<Real>& b, Real t) {
+    return {a.position + (b.position - a.position) * t, a.normal + (b.normal - a.normal) * t,
+            a.color + (b.color - a.color) * t, a.lit + (b.lit - a.lit) * t};
+}
+
+template <typename Real>
+struct ClipVertex {
+    Varyings<Real> varyings;
+    double depth = 0.0;   ///< z_c
+    double column = 0.0;  ///< valid once projected
+    double row = 0.0;
+};
+
+/// A convex polygon of at most 3 + 5 vertices (one per clip plane).
+template <typename Real>
+struct ClipPolygon {
+    std::array<ClipVertex<Real>, 8> vertices;
+    std::size_t count = 0;
+};
+
+/// Sutherland-Hodgman against one plane. `distance(v)` >= 0 is inside;
+/// `make(inside, outside, t)` builds the vertex at parameter t from inside to outside.
+template <typename Real, typename Distance, typename Make>
+void clip_against(const ClipPolygon<Real>& in, ClipPolygon<Real>& out, Distance&& distance,
+                  Make&& make) {
+    out.count = 0;
+    for (std::size_t i = 0; i < in.count; ++i) {
+        const ClipVertex<Real>& current = in.vertices[i];
+        const ClipVertex<Real>& next = in.vertices[(i + 1) % in.count];
+        const double d_current = distance(current);
+        const double d_next = distance(next);
+        const bool current_inside = d_current >= 0.0;
+        const bool next_inside = d_next >= 0.0;
+        if (current_inside) out.vertices[out.count++] = current;
+        if (current_inside != next_inside) {
+            const ClipVertex<Real>& inside = current_inside ? current : next;
+            const ClipVertex<Real>& outside = current_inside ? next : current;
+            const double d_inside = current_inside ? d_current : d_next;
+            const double d_outside = current_inside ? d_next : d_current;
+            const double t = d_inside / (d_inside - d_outside);
+            out.vertices[out.count++] = make(inside, outside, t);
+        }
+    }
+}
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_CLIPPING_HPP

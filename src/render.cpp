@@ -1,0 +1,568 @@
+// The render pipeline: vertex transform -> painter's sort -> triangle setup
+// (seed drop or clipping, snapping) -> banded parallel fill and shading.
+//
+// Every stage is a template over the arithmetic type Real (float or double)
+// so the same scene can be rendered in both and compared (RenderOptions::precision).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "clipping.hpp"
+#include "phongrast/render.hpp"
+#include "raster.hpp"
+#include "shading.hpp"
+
+namespace phongrast {
+namespace detail {
+namespace {
+
+/// Distance of the near clip plane in front of the eye, relative to the focal
+/// length so that scaling a whole scene (camera included) scales it too. What
+/// it removes is visible only within 1e-4 of the sensor's half-size around
+/// the image centre.
+constexpr double kNearPlaneOverFocal = 1e-4;
+constexpr int kBandRows = 16;
+constexpr std::size_t kSetupChunk = 4096;
+
+bool finite3(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool finite3(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+void validate_scene_values(const Scene& scene) {
+    const PhongMaterial& m = scene.material;
+    if (!finite3(m.ka)) throw std::invalid_argument("material.ka: expected finite numbers");
+    if (!finite3(m.kd)) throw std::invalid_argument("material.kd: expected finite numbers");
+    if (!finite3(m.ks)) throw std::invalid_argument("material.ks: expected finite numbers");
+    if (!(m.n >= 0.0f) || !std::isfinite(m.n)) {
+        throw std::invalid_argument("material.n: expected a non-negative finite number");
+    }
+    if (!finite3(scene.ambient)) throw std::invalid_argument("ambient: expected finite numbers");
+    if (!finite3(scene.image.background)) {
+        throw std::invalid_argument("image.background: expected finite numbers");
+    }
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        if (!finite3(scene.lights[i].position) || !finite3(scene.lights[i].intensity)) {
+            throw std::invalid_argument("lights[" + std::to_string(i) +
+                                        "]: expected finite position and intensity");
+        }
+    }
+    validate_mesh(scene.mesh);
+}
+
+template <typename Real>
+struct DrawTriangle {
+    CoverageTriangle coverage;
+    Varyings<Real> v[3];  ///< in coverage order
+    Real depth[3];
+    Real inverse_depth[3];
+    Vec3<Real> centroid;  ///< camera space, of the source triangle (seed light vectors)
+};
+
+template <typename Real>
+struct SetupCounts {
+    std::uint64_t degenerate = 0, dropped = 0, clipped = 0, outside = 0, drawn = 0;
+};
+
+template <typename Real>
+class Pipeline {
+public:
+    Pipeline(const Scene& scene, const RenderOptions& options, int rows, int columns)
+        : scene_(scene), options_(options),
+          frame_(make_camera_frame(scene.camera, rows, columns)),
+          near_(scene.camera.focal * kNearPlaneOverFocal) {}
+
+    Image run(RenderStats& stats) {
+        transform_vertices();
+        build_light_rig();
+        if (scene_.shader == Shader::gouraud &&
+            options_.light_vectors == LightVectors::shaded_point) {
+            light_vertices();
+        }
+        const std::vector<std::uint32_t> order = painter_order();
+        const std::vector<DrawTriangle<Real>> draws = set_up_triangles(order, stats);
+        return fill(draws, stats);
+    }
+
+private:
+    // ---- Vertex stage -------------------------------------------------------------
+    void transform_vertices() {
+        const Mesh& mesh = scene_.mesh;
+        const std::size_t count = mesh.positions.size();
+        const std::vector<glm::vec3> computed =
+            mesh.normals.empty() ? calculate_normals(mesh) : std::vector<glm::vec3>{};
+        const std::vector<glm::vec3>& normals = mesh.normals.empty() ? computed : mesh.normals;
+
+        camera_depth_.resize(count);
+        column_.resize(count);
+        row_.resize(count);
+        varyings_.resize(count);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                const glm::dvec3 camera = frame_.camera_from_world(mesh.positions[i]);
+                camera_depth_[i] = camera.z;
+                if (camera.z > 0.0) {
+                    const ProjectedPoint p = frame_.pixel_from_camera(camera);
+                    column_[i] = p.column;
+                    row_[i] = p.row;
+                } else {
+                    column_[i] = row_[i] = std::numeric_limits<double>::quiet_NaN();
+                }
+                Varyings<Real>& v = varyings_[i];
+                v.position = Vec3<Real>(camera);
+                v.normal = safe_normalize<Real>(
+                    Vec3<Real>(frame_.camera_from_world_direction(glm::dvec3(normals[i]))));
+                v.color = mesh.colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(mesh.colors[i]);
+                v.lit = Vec3<Real>(Real(0));
+            }
+        });
+    }
+
+    void build_light_rig() {
+        rig_.material = scene_.material;
+        rig_.lighting = scene_.lighting;
+        rig_.ambient = Vec3<Real>(scene_.ambient);
+        for (const PointLight& light : scene_.lights) {
+            rig_.lights.push_back({Vec3<Real>(frame_.camera_from_world(light.position)),
+                                   Vec3<Real>(light.intensity)});
+        }
+    }
+
+    // Gouraud with exact light vectors: each vertex's colour does not depend on
+    // the triangle, so it is lit once and shared.
+    void light_vertices() {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, varyings_.size(), 1024),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+            LightVectorsAt<Real> vectors;
+            for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                Varyings<Real>& v = varyings_[i];
+                vectors.compute(rig_, v.position);
+                v.lit = shade(rig_, vectors, v.normal, v.color);
+            }
+        });
+    }
+
+    // ---- Painter's order ----------------------------------------------------------
+    // Depth is the mean z_c of the three vertices; farthest first; ties keep mesh order.
+    std::vector<std::uint32_t> painter_order() const {
+        const std::vector<Triangle>& triangles = scene_.mesh.triangles;
+        std::vector<double> depth(triangles.size());
+        for (std::size_t t = 0; t < triangles.size(); ++t) {
+            const Triangle& tri = triangles[t];
+            depth[t] = (camera_depth_[tri[0]] + camera_depth_[tri[1]] + camera_depth_[tri[2]]) / 3.0;
+        }
+        std::vector<std::uint32_t> order(triangles.size());
+        std::iota(order.begin(), order.end(), 0u);
+        std::stable_sort(order.begin(), order.end(),
+                         [&depth](std::uint32_t a, std::uint32_t b) { return depth[a] > depth[b]; });
+        return order;
+    }
+
+    // ---- Triangle setup -----------------------------------------------------------
+    std::vector<DrawTriangle<Real>> set_up_triangles(const std::vector<std::uint32_t>& order,
+                                                     RenderStats& stats) const {
+        // Fixed-size chunks, concatenated in chunk order: the draw list is the
+        // same whatever the number of threads.
+        const std::size_t chunks = (order.size() + kSetupChunk - 1) / kSetupChunk;
+        std::vector<std::vector<DrawTriangle<Real>>> chunk_draws(chunks);
+        std::vector<SetupCounts<Real>> chunk_counts(chunks);
+        tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+            const std::size_t begin = chunk * kSetupChunk;
+            const std::size_t end = std::min(order.size(), begin + kSetupChunk);
+            chunk_draws[chunk].reserve(end - begin);
+            for (std::size_t k = begin; k < end; ++k) {
+                set_up_triangle(order[k], chunk_draws[chunk], chunk_counts[chunk]);
+            }
+        });
+        std::vector<DrawTriangle<Real>> draws;
+        std::size_t total = 0;
+        for (const auto& d : chunk_draws) total += d.size();
+        draws.reserve(total);
+        for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+            draws.insert(draws.end(), chunk_draws[chunk].begin(), chunk_draws[chunk].end());
+            stats.triangles_degenerate += chunk_counts[chunk].degenerate;
+            stats.triangles_dropped += chunk_counts[chunk].dropped;
+            stats.triangles_clipped += chunk_counts[chunk].clipped;
+            stats.triangles_outside += chunk_counts[chunk].outside;
+            stats.triangles_drawn += chunk_counts[chunk].drawn;
+        }
+        return draws;
+    }
+
+    bool vertex_inside_image(std::uint32_t i) const {
+        return camera_depth_[i] > 0.0 && column_[i] >= 0.0 && column_[i] <= frame_.columns &&
+               row_[i] >= 0.0 && row_[i] <= frame_.rows;
+    }
+
+    void project(ClipVertex<Real>& v) const {
+        const ProjectedPoint p = frame_.pixel_from_camera(glm::dvec3(v.varyings.position));
+        v.column = p.column;
+        v.row = p.row;
+    }
+
+    void set_up_triangle(std::uint32_t source, std::vector<DrawTriangle<Real>>& out,
+                         SetupCounts<Real>& counts) const {
+        const Triangle& tri = scene_.mesh.triangles[source];
+        const bool inside_image =
+            vertex_inside_image(tri[0]) && vertex_inside_image(tri[1]) && vertex_inside_image(tri[2]);
+        if (!inside_image && options_.border == BorderPolicy::drop_triangle) {
+            ++counts.dropped;
+            return;
+        }
+
+        ClipPolygon<Real> polygon;
+        polygon.count = 3;
+        for (int i = 0; i < 3; ++i) {
+            ClipVertex<Real>& v = polygon.vertices[i];
+            v.varyings = varyings_[tri[i]];
+            v.depth = camera_depth_[tri[i]];
+            v.column = column_[tri[i]];
+            v.row = row_[tri[i]];
+        }
+        const Vec3<Real> centroid = (polygon.vertices[0].varyings.position +
+                                     polygon.vertices[1].varyings.position +
+                                     polygon.vertices[2].varyings.position) / Real(3);
+        light_corners(polygon, centroid);
+
+        bool clipped = !inside_image;
+        if (!clip_to_view(polygon)) {
+            ++counts.outside;
+            return;
+        }
+
+        bool any_area = false, any_drawn = false;
+        for (std::size_t k = 1; k + 1 < polygon.count; ++k) {
+            const ClipVertex<Real>* corner[3] = {&polygon.vertices[0], &polygon.vertices[k],
+                                                 &polygon.vertices[k + 1]};
+            DrawTriangle<Real> draw;
+            const SnappedPoint a = snap(corner[0]->column, corner[0]->row);
+            const SnappedPoint b = snap(corner[1]->column, corner[1]->row);
+            const SnappedPoint c = snap(corner[2]->column, corner[2]->row);
+            if (edge_value(a, b, c.x, c.y) != 0) any_area = true;
+            if (!setup_coverage(a, b, c, frame_.rows, frame_.columns, draw.coverage)) continue;
+            if (draw.coverage.swapped) std::swap(corner[1], corner[2]);
+            for (int i = 0; i < 3; ++i) {
+                draw.v[i] = corner[i]->varyings;
+                draw.depth[i] = static_cast<Real>(corner[i]->depth);
+                draw.inverse_depth[i] = Real(1) / draw.depth[i];
+            }
+            draw.centroid = centroid;
+            out.push_back(draw);
+            any_drawn = true;
+        }
+        if (clipped) ++counts.clipped;
+        if (any_drawn) {
+            ++counts.drawn;
+        } else if (!any_area) {
+            ++counts.degenerate;
+        } else {
+            ++counts.outside;
+        }
+    }
+
+    // Sets `lit` on the triangle's corners: the flat colour, or the Gouraud vertex colours.
+    void light_corners(ClipPolygon<Real>& polygon, const Vec3<Real>& centroid) const {
+        if (scene_.shader == Shader::flat) {
+            Vec3<Real> normal(Real(0)), color(Real(0));
+            for (int i = 0; i < 3; ++i) {
+                normal += polygon.vertices[i].varyings.normal;
+                color += polygon.vertices[i].varyings.color;
+            }
+            LightVectorsAt<Real> vectors;
+            vectors.compute(rig_, centroid);
+            const Vec3<Real> lit = shade(rig_, vectors, safe_normalize<Real>(normal), color / Real(3));
+            for (int i = 0; i < 3; ++i) polygon.vertices[i].varyings.lit = lit;
+        } else if (scene_.shader == Shader::gouraud &&
+                   options_.light_vectors == LightVectors::triangle_centroid) {
+            LightVectorsAt<Real> vectors;
+            vectors.compute(rig_, centroid);
+            for (int i = 0; i < 3; ++i) {
+                Varyings<Real>& v = polygon.vertices[i].varyings;
+                v.lit = shade(rig_, vectors, v.normal, v.color);
+            }
+        }
+        // Gouraud with exact vectors: `lit` came lit from light_vertices().
+    }
+
+    // Near plane, then the guard band. Returns false when nothing is left.
+    bool clip_to_view(ClipPolygon<Real>& polygon) const {
+        ClipPolygon<Real> scratch;
+        bool behind = false;
+        for (std::size_t i = 0; i < polygon.count; ++i) behind |= polygon.vertices[i].depth < near_;
+        if (behind) {
+            clip_against<Real>(
+                polygon, scratch, [this](const ClipVertex<Real>& v) { return v.depth - near_; },
+                [this](const ClipVertex<Real>& inside, const ClipVertex<Real>& outside, double t) {
+                    ClipVertex<Real> v;
+                    v.varyings = lerp(inside.varyings, outside.varyings, static_cast<Real>(t));
+                    v.depth = inside.depth + (outside.depth - inside.depth) * t;
+                    v.varyings.position.z = static_cast<Real>(v.depth);
+                    project(v);
+                    return v;
+                });
+            polygon = scratch;
+            if (polygon.count < 3) return false;
+        }
+
+        const double lo = -kGuardBandPixels;
+        const double column_hi = frame_.columns + kGuardBandPixels;
+        const double row_hi = frame_.rows + kGuardBandPixels;
+        bool beyond_guard = false;
+        for (std::size_t i = 0; i < polygon.count; ++i) {
+            const ClipVertex<Real>& v = polygon.vertices[i];
+            beyond_guard |= !(v.column >= lo && v.column <= column_hi && v.row >= lo && v.row <= row_hi);
+        }
+        if (!beyond_guard) return true;
+
+        const bool perspective = options_.interpolation == Interpolation::perspective_correct;
+        const auto make = [perspective](const ClipVertex<Real>& inside, const ClipVertex<Real>& outside,
+                                        double t) {
+            // t is linear in screen space; for perspective-correct attributes the
+            // matching 3D parameter weights each end by 1/z.
+            double s = t;
+            if (perspective) {
+                const double wi = (1.0 - t) / inside.depth, wo = t / outside.depth;
+                s = wo / (wi + wo);
+            }
+            ClipVertex<Real> v;
+            v.varyings = lerp(inside.varyings, outside.varyings, static_cast<Real>(s));
+            v.depth = inside.depth + (outside.depth - inside.depth) * s;
+            v.column = inside.column + (outside.column - inside.column) * t;
+            v.row = inside.row + (outside.row - inside.row) * t;
+            return v;
+        };
+        const auto plane = [&](auto distance) {
+            clip_against<Real>(polygon, scratch, distance, make);
+            polygon = scratch;
+            return polygon.count >= 3;
+        };
+        return plane([lo](const ClipVertex<Real>& v) { return v.column - lo; }) &&
+               plane([column_hi](const ClipVertex<Real>& v) { return column_hi - v.column; }) &&
+               plane([lo](const ClipVertex<Real>& v) { return v.row - lo; }) &&
+               plane([row_hi](const ClipVertex<Real>& v) { return row_hi - v.row; });
+    }
+
+    // ---- Fill ---------------------------------------------------------------------
+    Image fill(const std::vector<DrawTriangle<Real>>& draws, RenderStats& stats) const {
+        Image image(frame_.rows, frame_.columns, scene_.image.background);
+        const bool depth_test = options_.visibility == Visibility::depth_buffer;
+        std::vector<Real> depth_buffer(depth_test ? image.pixels.size() : 0,
+                                       std::numeric_limits<Real>::infinity());
+        const int bands = (frame_.rows + kBandRows - 1) / kBandRows;
+        std::vector<std::uint64_t> shaded(bands, 0), replaced(bands, 0);
+        const bool perspective = options_.interpolation == Interpolation::perspective_correct;
+
+        tbb::parallel_for(0, bands, [&](int band) {
+            BandContext context{image, depth_buffer, band * kBandRows,
+                                std::min(frame_.rows, (band + 1) * kBandRows), 0, 0, {}};
+            for (const DrawTriangle<Real>& draw : draws) {
+                if (draw.coverage.row_max < context.row_begin || draw.coverage.row_min >= context.row_end) {
+                    continue;
+                }
+                dispatch_triangle(draw, context, perspective, depth_test);
+            }
+            shaded[band] = context.shaded;
+            replaced[band] = context.replaced;
+        });
+        for (int band = 0; band < bands; ++band) {
+            stats.samples_shaded += shaded[band];
+            stats.nonfinite_values_replaced += replaced[band];
+        }
+        return image;
+    }
+
+    struct BandContext {
+        Image& image;
+        std::vector<Real>& depth_buffer;
+        int row_begin, row_end;
+        std::uint64_t shaded, replaced;
+        LightVectorsAt<Real> vectors;
+    };
+
+    void dispatch_triangle(const DrawTriangle<Real>& draw, BandContext& context, bool perspective,
+                           bool depth_test) const {
+        // One branch per triangle picks a kernel; none is left in the pixel loop.
+        const auto with_shader = [&](auto perspective_tag, auto depth_tag) {
+            switch (scene_.shader) {
+                case Shader::flat:
+                    fill_triangle<Shader::flat, decltype(perspective_tag)::value,
+                                  decltype(depth_tag)::value>(draw, context);
+                    break;
+                case Shader::gouraud:
+                    fill_triangle<Shader::gouraud, decltype(perspective_tag)::value,
+                                  decltype(depth_tag)::value>(draw, context);
+                    break;
+                case Shader::phong:
+                    fill_triangle<Shader::phong, decltype(perspective_tag)::value,
+                                  decltype(depth_tag)::value>(draw, context);
+                    break;
+            }
+        };
+        using yes = std::true_type;
+        using no = std::false_type;
+        if (perspective) {
+            depth_test ? with_shader(yes{}, yes{}) : with_shader(yes{}, no{});
+        } else {
+            depth_test ? with_shader(no{}, yes{}) : with_shader(no{}, no{});
+        }
+    }
+
+    template <Shader shader, bool perspective, bool depth_test>
+    void fill_triangle(const DrawTriangle<Real>& draw, BandContext& context) const {
+        const bool per_pixel_vectors = options_.light_vectors == LightVectors::shaded_point;
+        if (shader == Shader::phong && !per_pixel_vectors) context.vectors.compute(rig_, draw.centroid);
+        const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2);
+        Image& image = context.image;
+
+        for_each_covered_pixel(draw.coverage, context.row_begin, context.row_end,
+                               [&](int row, int column, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
+            Real w[3] = {static_cast<Real>(e0) * inverse_area, static_cast<Real>(e1) * inverse_area,
+                         static_cast<Real>(e2) * inverse_area};
+            Real depth;
+            if constexpr (perspective) {
+                Real sum = Real(0);
+                for (int i = 0; i < 3; ++i) {
+                    w[i] *= draw.inverse_depth[i];
+                    sum += w[i];
+                }
+                depth = Real(1) / sum;
+                for (int i = 0; i < 3; ++i) w[i] *= depth;
+            } else {
+                depth = w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
+            }
+            const std::size_t index = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns) +
+                                      static_cast<std::size_t>(column);
+            if constexpr (depth_test) {
+                // <= lets a later triangle at equal depth win, as in painter's order.
+                if (!(depth <= context.depth_buffer[index])) return;
+                context.depth_buffer[index] = depth;
+            }
+
+            Vec3<Real> color;
+            if constexpr (shader == Shader::phong) {
+                const Vec3<Real> normal = safe_normalize<Real>(
+                    w[0] * draw.v[0].normal + w[1] * draw.v[1].normal + w[2] * draw.v[2].normal);
+                const Vec3<Real> surface =
+                    w[0] * draw.v[0].color + w[1] * draw.v[1].color + w[2] * draw.v[2].color;
+                if (per_pixel_vectors) {
+                    context.vectors.compute(rig_, w[0] * draw.v[0].position + w[1] * draw.v[1].position +
+                                                      w[2] * draw.v[2].position);
+                }
+                color = shade(rig_, context.vectors, normal, surface);
+            } else {
+                color = w[0] * draw.v[0].lit + w[1] * draw.v[1].lit + w[2] * draw.v[2].lit;
+            }
+            glm::vec3 out(color);
+            for (int channel = 0; channel < 3; ++channel) {
+                // Last guard: every input was validated finite, so this should never fire.
+                if (!std::isfinite(out[channel])) {
+                    out[channel] = 0.0f;
+                    ++context.replaced;
+                }
+            }
+            image.pixels[index] = out;
+            ++context.shaded;
+        });
+    }
+
+    const Scene& scene_;
+    RenderOptions options_;
+    CameraFrame frame_;
+    double near_;
+    LightRig<Real> rig_;
+    std::vector<double> camera_depth_, column_, row_;
+    std::vector<Varyings<Real>> varyings_;
+};
+
+Image box_downsample(const Image& fine, int factor, int rows, int columns) {
+    Image coarse(rows, columns);
+    const float weight = 1.0f / static_cast<float>(factor * factor);
+    for (int row = 0; row < rows; ++row) {
+        for (int column = 0; column < columns; ++column) {
+            glm::vec3 sum(0.0f);
+            for (int dy = 0; dy < factor; ++dy) {
+                for (int dx = 0; dx < factor; ++dx) sum += fine.at(row * factor + dy, column * factor + dx);
+            }
+            coarse.at(row, column) = sum * weight;
+        }
+    }
+    return coarse;
+}
+
+}  // namespace
+}  // namespace detail
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    detail::validate_scene_values(scene);
+    if (options.samples_per_axis < 1 || options.samples_per_axis > 16) {
+        throw std::invalid_argument("samples_per_axis: expected 1 to 16, got " +
+                                    std::to_string(options.samples_per_axis));
+    }
+    if (options.threads < 0) throw std::invalid_argument("threads: expected 0 (all cores) or more");
+    const int factor = options.samples_per_axis;
+    const long long fine_rows = static_cast<long long>(scene.image.rows) * factor;
+    const long long fine_columns = static_cast<long long>(scene.image.columns) * factor;
+    if (scene.image.rows < 1 || fine_rows > detail::kMaxImageSide) {
+        throw std::invalid_argument("image.height: expected 1 to " +
+                                    std::to_string(detail::kMaxImageSide / factor) + " rows, got " +
+                                    std::to_string(scene.image.rows));
+    }
+    if (scene.image.columns < 1 || fine_columns > detail::kMaxImageSide) {
+        throw std::invalid_argument("image.width: expected 1 to " +
+                                    std::to_string(detail::kMaxImageSide / factor) + " columns, got " +
+                                    std::to_string(scene.image.columns));
+    }
+
+    RenderResult result;
+    result.stats.triangles_in = scene.mesh.triangles.size();
+    const int concurrency = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
+    tbb::task_arena arena(concurrency);
+    arena.execute([&] {
+        const auto run = [&](auto real_tag) {
+            using Real = decltype(real_tag);
+            detail::Pipeline<Real> pipeline(scene, options, static_cast<int>(fine_rows),
+                                            static_cast<int>(fine_columns));
+            return pipeline.run(result.stats);
+        };
+        Image fine = options.precision == Precision::double_float ? run(double{}) : run(float{});
+        result.image = factor == 1 ? std::move(fine)
+                                   : detail::box_downsample(fine, factor, scene.image.rows,
+                                                            scene.image.columns);
+    });
+    result.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+Image render_object(const std::vector<glm::dvec3>& positions, const std::vector<glm::vec3>& colors,
+                    const std::vector<Triangle>& faces, const Camera& camera, const ImageSpec& image,
+                    const PhongMaterial& material, const glm::vec3& ambient,
+                    const std::vector<PointLight>& lights, Shader shader, Lighting lighting,
+                    const RenderOptions& options) {
+    Scene scene;
+    scene.mesh.positions = positions;
+    scene.mesh.colors = colors;
+    scene.mesh.triangles = faces;
+    scene.camera = camera;
+    scene.image = image;
+    scene.material = material;
+    scene.ambient = ambient;
+    scene.lights = lights;
+    scene.shader = shader;
+    scene.lighting = lighting;
+    return render(scene, options).image;
+}
+
+}  // namespace phongrast
