@@ -11,13 +11,16 @@
 #include <stdexcept>
 #include <string>
 
+#include <glm/geometric.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "clipping.hpp"
+#include "fill_kernels.hpp"
 #include "phongrast/render.hpp"
 #include "raster.hpp"
+#include "scene_analysis.hpp"
 #include "shading.hpp"
 
 namespace phongrast {
@@ -60,18 +63,9 @@ void validate_scene_values(const Scene& scene) {
     validate_mesh(scene.mesh);
 }
 
-template <typename Real>
-struct DrawTriangle {
-    CoverageTriangle coverage;
-    Varyings<Real> v[3];  ///< in coverage order
-    Real depth[3];
-    Real inverse_depth[3];
-    Vec3<Real> centroid;  ///< camera space, of the source triangle (seed light vectors)
-};
-
-template <typename Real>
 struct SetupCounts {
-    std::uint64_t degenerate = 0, dropped = 0, clipped = 0, outside = 0, drawn = 0;
+    std::uint64_t degenerate = 0, dropped = 0, clipped = 0, outside = 0, drawn = 0, culled = 0;
+    std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during setup
 };
 
 template <typename Real>
@@ -83,11 +77,19 @@ public:
           near_(scene.camera.focal * kNearPlaneOverFocal) {}
 
     Image run(RenderStats& stats) {
+        effects_ = find_effects(scene_);
+        stats.effects = effects_;
+        if (options_.back_faces == BackFaces::cull_when_hidden) {
+            hidden_back_faces_ = find_hidden_back_faces(scene_.mesh, scene_.camera.eye);
+            stats.back_faces_culled = hidden_back_faces_ != HiddenBackFaces::unknown;
+        }
         transform_vertices();
         build_light_rig();
+        choose_kernel();
         if (scene_.shader == Shader::gouraud &&
             options_.light_vectors == LightVectors::shaded_point) {
             light_vertices();
+            count_point_evaluations(varyings_.size(), stats);
         }
         const std::vector<std::uint32_t> order = painter_order();
         const std::vector<DrawTriangle<Real>> draws = set_up_triangles(order, stats);
@@ -99,8 +101,11 @@ private:
     void transform_vertices() {
         const Mesh& mesh = scene_.mesh;
         const std::size_t count = mesh.positions.size();
-        const std::vector<glm::vec3> computed =
-            mesh.normals.empty() ? calculate_normals(mesh) : std::vector<glm::vec3>{};
+        // Ambient-only scenes never look at a normal: do not compute any.
+        const bool need_normals = effects_.normals || !options_.specialize_effects;
+        const std::vector<glm::vec3> computed = need_normals && mesh.normals.empty()
+                                                    ? calculate_normals(mesh)
+                                                    : std::vector<glm::vec3>{};
         const std::vector<glm::vec3>& normals = mesh.normals.empty() ? computed : mesh.normals;
 
         camera_depth_.resize(count);
@@ -121,8 +126,9 @@ private:
                 }
                 Varyings<Real>& v = varyings_[i];
                 v.position = Vec3<Real>(camera);
-                v.normal = safe_normalize<Real>(
-                    Vec3<Real>(frame_.camera_from_world_direction(glm::dvec3(normals[i]))));
+                v.normal = need_normals ? safe_normalize<Real>(Vec3<Real>(
+                                              frame_.camera_from_world_direction(glm::dvec3(normals[i]))))
+                                        : Vec3<Real>(Real(0));
                 v.color = mesh.colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(mesh.colors[i]);
                 v.lit = Vec3<Real>(Real(0));
             }
@@ -132,10 +138,44 @@ private:
     void build_light_rig() {
         rig_.material = scene_.material;
         rig_.lighting = scene_.lighting;
-        rig_.ambient = Vec3<Real>(scene_.ambient);
+        // The same product, in the same order, as ambient_term(): ka * Ia, then * c.
+        rig_.ambient_factor = Vec3<Real>(scene_.material.ka) * Vec3<Real>(scene_.ambient);
         for (const PointLight& light : scene_.lights) {
-            rig_.lights.push_back({Vec3<Real>(frame_.camera_from_world(light.position)),
-                                   Vec3<Real>(light.intensity)});
+            const CameraLight<Real> camera_light{Vec3<Real>(frame_.camera_from_world(light.position)),
+                                                 Vec3<Real>(light.intensity)};
+            rig_.lights.push_back(camera_light);
+            if (light.intensity != glm::vec3(0.0f)) rig_.active_lights.push_back(camera_light);
+        }
+        point_shader_.rig = &rig_;
+        point_shader_.effects = effects_;
+        point_shader_.specialized = options_.specialize_effects;
+    }
+
+    void choose_kernel() {
+        const std::vector<glm::vec3>& colors = scene_.mesh.colors;
+        fill_setup_.rig = &rig_;
+        fill_setup_.uniform_color = !effects_.varying_colors;
+        fill_setup_.color = colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[0]);
+        KernelChoice choice;
+        choice.phong = scene_.shader == Shader::phong;
+        choice.perspective = options_.interpolation == Interpolation::perspective_correct;
+        choice.specialized = options_.specialize_effects;
+        choice.per_sample_vectors = options_.light_vectors == LightVectors::shaded_point;
+        choice.uniform_color = fill_setup_.uniform_color;
+        choice.effects = effects_;
+        kernel_ = pick_kernel<Real>(choice);
+    }
+
+    // Term counts for `points` lit outside the fill (vertices, corners, flat centroids).
+    void count_point_evaluations(std::uint64_t points, RenderStats& stats) const {
+        if (options_.specialize_effects) {
+            if (effects_.ambient) stats.ambient_evaluations += points;
+            if (effects_.diffuse) stats.diffuse_evaluations += points * effects_.active_lights;
+            if (effects_.specular) stats.specular_evaluations += points * effects_.active_lights;
+        } else {
+            if (scene_.lighting.ambient) stats.ambient_evaluations += points;
+            if (scene_.lighting.diffuse) stats.diffuse_evaluations += points * scene_.lights.size();
+            if (scene_.lighting.specular) stats.specular_evaluations += points * scene_.lights.size();
         }
     }
 
@@ -147,8 +187,7 @@ private:
             LightVectorsAt<Real> vectors;
             for (std::size_t i = range.begin(); i != range.end(); ++i) {
                 Varyings<Real>& v = varyings_[i];
-                vectors.compute(rig_, v.position);
-                v.lit = shade(rig_, vectors, v.normal, v.color);
+                v.lit = point_shader_(vectors, v.position, v.normal, v.color);
             }
         });
     }
@@ -176,7 +215,7 @@ private:
         // same whatever the number of threads.
         const std::size_t chunks = (order.size() + kSetupChunk - 1) / kSetupChunk;
         std::vector<std::vector<DrawTriangle<Real>>> chunk_draws(chunks);
-        std::vector<SetupCounts<Real>> chunk_counts(chunks);
+        std::vector<SetupCounts> chunk_counts(chunks);
         tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
             const std::size_t begin = chunk * kSetupChunk;
             const std::size_t end = std::min(order.size(), begin + kSetupChunk);
@@ -196,6 +235,8 @@ private:
             stats.triangles_clipped += chunk_counts[chunk].clipped;
             stats.triangles_outside += chunk_counts[chunk].outside;
             stats.triangles_drawn += chunk_counts[chunk].drawn;
+            stats.triangles_culled += chunk_counts[chunk].culled;
+            count_point_evaluations(chunk_counts[chunk].lit_points, stats);
         }
         return draws;
     }
@@ -212,8 +253,12 @@ private:
     }
 
     void set_up_triangle(std::uint32_t source, std::vector<DrawTriangle<Real>>& out,
-                         SetupCounts<Real>& counts) const {
+                         SetupCounts& counts) const {
         const Triangle& tri = scene_.mesh.triangles[source];
+        if (hidden_back_faces_ != HiddenBackFaces::unknown && faces_away(tri)) {
+            ++counts.culled;
+            return;
+        }
         const bool inside_image =
             vertex_inside_image(tri[0]) && vertex_inside_image(tri[1]) && vertex_inside_image(tri[2]);
         if (!inside_image && options_.border == BorderPolicy::drop_triangle) {
@@ -233,7 +278,7 @@ private:
         const Vec3<Real> centroid = (polygon.vertices[0].varyings.position +
                                      polygon.vertices[1].varyings.position +
                                      polygon.vertices[2].varyings.position) / Real(3);
-        light_corners(polygon, centroid);
+        if (scene_.shader == Shader::gouraud) counts.lit_points += light_corners(polygon, centroid);
 
         bool clipped = !inside_image;
         if (!clip_to_view(polygon)) {
@@ -241,6 +286,7 @@ private:
             return;
         }
 
+        const std::size_t first_draw = out.size();
         bool any_area = false, any_drawn = false;
         for (std::size_t k = 1; k + 1 < polygon.count; ++k) {
             const ClipVertex<Real>* corner[3] = {&polygon.vertices[0], &polygon.vertices[k],
@@ -262,6 +308,15 @@ private:
             any_drawn = true;
         }
         if (clipped) ++counts.clipped;
+        if (any_drawn && scene_.shader == Shader::flat) {
+            // Lit only once something is to be drawn: clipped-away and
+            // degenerate triangles cost no lighting.
+            const Vec3<Real> lit = flat_color(tri, centroid);
+            ++counts.lit_points;
+            for (std::size_t d = first_draw; d < out.size(); ++d) {
+                for (Varyings<Real>& v : out[d].v) v.lit = lit;
+            }
+        }
         if (any_drawn) {
             ++counts.drawn;
         } else if (!any_area) {
@@ -271,28 +326,42 @@ private:
         }
     }
 
-    // Sets `lit` on the triangle's corners: the flat colour, or the Gouraud vertex colours.
-    void light_corners(ClipPolygon<Real>& polygon, const Vec3<Real>& centroid) const {
-        if (scene_.shader == Shader::flat) {
-            Vec3<Real> normal(Real(0)), color(Real(0));
-            for (int i = 0; i < 3; ++i) {
-                normal += polygon.vertices[i].varyings.normal;
-                color += polygon.vertices[i].varyings.color;
-            }
-            LightVectorsAt<Real> vectors;
-            vectors.compute(rig_, centroid);
-            const Vec3<Real> lit = shade(rig_, vectors, safe_normalize<Real>(normal), color / Real(3));
-            for (int i = 0; i < 3; ++i) polygon.vertices[i].varyings.lit = lit;
-        } else if (scene_.shader == Shader::gouraud &&
-                   options_.light_vectors == LightVectors::triangle_centroid) {
-            LightVectorsAt<Real> vectors;
-            vectors.compute(rig_, centroid);
+    // A back face: its vertices run clockwise seen from the eye (for an
+    // outward-oriented mesh), decided in double in world space.
+    bool faces_away(const Triangle& tri) const {
+        const glm::dvec3& a = scene_.mesh.positions[tri[0]];
+        const glm::dvec3 normal =
+            glm::cross(scene_.mesh.positions[tri[1]] - a, scene_.mesh.positions[tri[2]] - a);
+        const double facing = glm::dot(normal, scene_.camera.eye - a);
+        return hidden_back_faces_ == HiddenBackFaces::outward_oriented ? facing < 0.0 : facing > 0.0;
+    }
+
+    // Flat: one colour per triangle, lit at the centroid with the mean vertex
+    // normal (renormalised) and the mean vertex colour.
+    Vec3<Real> flat_color(const Triangle& tri, const Vec3<Real>& centroid) const {
+        thread_local LightVectorsAt<Real> vectors;
+        Vec3<Real> normal(Real(0)), color(Real(0));
+        for (std::uint32_t index : tri) {
+            normal += varyings_[index].normal;
+            color += varyings_[index].color;
+        }
+        const Vec3<Real> surface = fill_setup_.uniform_color ? fill_setup_.color : color / Real(3);
+        return point_shader_(vectors, centroid, safe_normalize<Real>(normal), surface);
+    }
+
+    // Gouraud with the seed's centroid vectors: lights the triangle's own
+    // corners (before clipping, so clipped corners interpolate lit colours).
+    // Returns the points lit.
+    std::uint64_t light_corners(ClipPolygon<Real>& polygon, const Vec3<Real>& centroid) const {
+        thread_local LightVectorsAt<Real> vectors;
+        if (scene_.shader == Shader::gouraud && options_.light_vectors == LightVectors::triangle_centroid) {
             for (int i = 0; i < 3; ++i) {
                 Varyings<Real>& v = polygon.vertices[i].varyings;
-                v.lit = shade(rig_, vectors, v.normal, v.color);
+                v.lit = point_shader_(vectors, centroid, v.normal, v.color);
             }
+            return 3;
         }
-        // Gouraud with exact vectors: `lit` came lit from light_vertices().
+        return 0;  // Gouraud with exact vectors: `lit` came from light_vertices(); Phong lights per sample.
     }
 
     // Near plane, then the guard band. Returns false when nothing is left.
@@ -361,126 +430,54 @@ private:
                                        std::numeric_limits<Real>::infinity());
         const int bands = (frame_.rows + kBandRows - 1) / kBandRows;
         std::vector<std::uint64_t> shaded(bands, 0), replaced(bands, 0);
-        const bool perspective = options_.interpolation == Interpolation::perspective_correct;
 
         tbb::parallel_for(0, bands, [&](int band) {
-            BandContext context{image, depth_buffer, band * kBandRows,
-                                std::min(frame_.rows, (band + 1) * kBandRows), 0, 0, {}};
+            FillTarget<Real> target{image, depth_buffer, band * kBandRows,
+                                    std::min(frame_.rows, (band + 1) * kBandRows), depth_test, 0, 0};
+            LightVectorsAt<Real> vectors;
             for (const DrawTriangle<Real>& draw : draws) {
-                if (draw.coverage.row_max < context.row_begin || draw.coverage.row_min >= context.row_end) {
+                if (draw.coverage.row_max < target.row_begin || draw.coverage.row_min >= target.row_end) {
                     continue;
                 }
-                dispatch_triangle(draw, context, perspective, depth_test);
+                kernel_(draw, target, vectors, fill_setup_);
             }
-            shaded[band] = context.shaded;
-            replaced[band] = context.replaced;
+            shaded[band] = target.samples;
+            replaced[band] = target.replaced;
         });
         for (int band = 0; band < bands; ++band) {
             stats.samples_shaded += shaded[band];
             stats.nonfinite_values_replaced += replaced[band];
         }
+        count_sample_evaluations(stats.samples_shaded, stats);
         return image;
     }
 
-    struct BandContext {
-        Image& image;
-        std::vector<Real>& depth_buffer;
-        int row_begin, row_end;
-        std::uint64_t shaded, replaced;
-        LightVectorsAt<Real> vectors;
-    };
-
-    void dispatch_triangle(const DrawTriangle<Real>& draw, BandContext& context, bool perspective,
-                           bool depth_test) const {
-        // One branch per triangle picks a kernel; none is left in the pixel loop.
-        const auto with_shader = [&](auto perspective_tag, auto depth_tag) {
-            switch (scene_.shader) {
-                case Shader::flat:
-                    fill_triangle<Shader::flat, decltype(perspective_tag)::value,
-                                  decltype(depth_tag)::value>(draw, context);
-                    break;
-                case Shader::gouraud:
-                    fill_triangle<Shader::gouraud, decltype(perspective_tag)::value,
-                                  decltype(depth_tag)::value>(draw, context);
-                    break;
-                case Shader::phong:
-                    fill_triangle<Shader::phong, decltype(perspective_tag)::value,
-                                  decltype(depth_tag)::value>(draw, context);
-                    break;
-            }
-        };
-        using yes = std::true_type;
-        using no = std::false_type;
-        if (perspective) {
-            depth_test ? with_shader(yes{}, yes{}) : with_shader(yes{}, no{});
+    // Per-sample term counts follow from the kernel chosen: it evaluates exactly these.
+    void count_sample_evaluations(std::uint64_t samples, RenderStats& stats) const {
+        if (scene_.shader != Shader::phong) return;
+        if (options_.specialize_effects) {
+            if (effects_.ambient) stats.ambient_evaluations += samples;
+            if (effects_.diffuse) stats.diffuse_evaluations += samples * effects_.active_lights;
+            if (effects_.specular) stats.specular_evaluations += samples * effects_.active_lights;
+            if (effects_.normals) stats.normal_interpolations += samples;
         } else {
-            depth_test ? with_shader(no{}, yes{}) : with_shader(no{}, no{});
+            if (scene_.lighting.ambient) stats.ambient_evaluations += samples;
+            if (scene_.lighting.diffuse) stats.diffuse_evaluations += samples * scene_.lights.size();
+            if (scene_.lighting.specular) stats.specular_evaluations += samples * scene_.lights.size();
+            stats.normal_interpolations += samples;
         }
-    }
-
-    template <Shader shader, bool perspective, bool depth_test>
-    void fill_triangle(const DrawTriangle<Real>& draw, BandContext& context) const {
-        const bool per_pixel_vectors = options_.light_vectors == LightVectors::shaded_point;
-        if (shader == Shader::phong && !per_pixel_vectors) context.vectors.compute(rig_, draw.centroid);
-        const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2);
-        Image& image = context.image;
-
-        for_each_covered_pixel(draw.coverage, context.row_begin, context.row_end,
-                               [&](int row, int column, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
-            Real w[3] = {static_cast<Real>(e0) * inverse_area, static_cast<Real>(e1) * inverse_area,
-                         static_cast<Real>(e2) * inverse_area};
-            Real depth;
-            if constexpr (perspective) {
-                Real sum = Real(0);
-                for (int i = 0; i < 3; ++i) {
-                    w[i] *= draw.inverse_depth[i];
-                    sum += w[i];
-                }
-                depth = Real(1) / sum;
-                for (int i = 0; i < 3; ++i) w[i] *= depth;
-            } else {
-                depth = w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
-            }
-            const std::size_t index = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns) +
-                                      static_cast<std::size_t>(column);
-            if constexpr (depth_test) {
-                // <= lets a later triangle at equal depth win, as in painter's order.
-                if (!(depth <= context.depth_buffer[index])) return;
-                context.depth_buffer[index] = depth;
-            }
-
-            Vec3<Real> color;
-            if constexpr (shader == Shader::phong) {
-                const Vec3<Real> normal = safe_normalize<Real>(
-                    w[0] * draw.v[0].normal + w[1] * draw.v[1].normal + w[2] * draw.v[2].normal);
-                const Vec3<Real> surface =
-                    w[0] * draw.v[0].color + w[1] * draw.v[1].color + w[2] * draw.v[2].color;
-                if (per_pixel_vectors) {
-                    context.vectors.compute(rig_, w[0] * draw.v[0].position + w[1] * draw.v[1].position +
-                                                      w[2] * draw.v[2].position);
-                }
-                color = shade(rig_, context.vectors, normal, surface);
-            } else {
-                color = w[0] * draw.v[0].lit + w[1] * draw.v[1].lit + w[2] * draw.v[2].lit;
-            }
-            glm::vec3 out(color);
-            for (int channel = 0; channel < 3; ++channel) {
-                // Last guard: every input was validated finite, so this should never fire.
-                if (!std::isfinite(out[channel])) {
-                    out[channel] = 0.0f;
-                    ++context.replaced;
-                }
-            }
-            image.pixels[index] = out;
-            ++context.shaded;
-        });
     }
 
     const Scene& scene_;
     RenderOptions options_;
     CameraFrame frame_;
     double near_;
+    EffectSet effects_;
+    HiddenBackFaces hidden_back_faces_ = HiddenBackFaces::unknown;
     LightRig<Real> rig_;
+    PointShader<Real> point_shader_;
+    FillSetup<Real> fill_setup_;
+    FillKernel<Real> kernel_ = nullptr;
     std::vector<double> camera_depth_, column_, row_;
     std::vector<Varyings<Real>> varyings_;
 };

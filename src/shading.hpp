@@ -1,4 +1,4 @@
-// Per-sample lighting in camera space (internal header).
+// Per-point lighting in camera space (internal header).
 //
 // The renderer lights in camera space: the eye is the origin, and every
 // position is relative to it. Subtracting the eye once, in double, before any
@@ -6,12 +6,20 @@
 // units away as sharp as one at the origin. The formula itself is the one in
 // phongrast/lighting.hpp; dot products do not change under the camera's
 // rotation, so the result is the world-space result.
+//
+// Two evaluators give bit-identical results:
+//   * shade_general asks at run time which terms are selected and loops over
+//     every light, as a straightforward implementation would;
+//   * shade_terms<A, D, S> is compiled for one effect set and loops over the
+//     lights with non-zero intensity only. Skipped work only ever added an
+//     exact zero, and the additions happen in the same order, so the sums match.
 #ifndef PHONGRAST_SRC_SHADING_HPP
 #define PHONGRAST_SRC_SHADING_HPP
 
 #include <vector>
 
 #include "phongrast/lighting.hpp"
+#include "phongrast/render.hpp"
 
 namespace phongrast::detail {
 
@@ -21,11 +29,12 @@ struct CameraLight {
     Vec3<Real> intensity;
 };
 
-/// What the lighting formula needs besides the surface: lights, Ia, material, terms.
+/// What the lighting formula needs besides the surface.
 template <typename Real>
 struct LightRig {
-    std::vector<CameraLight<Real>> lights;
-    Vec3<Real> ambient{Real(0)};
+    std::vector<CameraLight<Real>> lights;         ///< every light, for the general evaluator
+    std::vector<CameraLight<Real>> active_lights;  ///< non-zero intensity only, for the specialised ones
+    Vec3<Real> ambient_factor{Real(0)};            ///< ka * Ia, the same product ambient_term forms
     PhongMaterial material;
     Lighting lighting;
 };
@@ -36,36 +45,85 @@ struct LightVectorsAt {
     std::vector<Vec3<Real>> to_light;
     Vec3<Real> to_eye{Real(0)};
 
-    void compute(const LightRig<Real>& rig, const Vec3<Real>& point) {
-        to_light.resize(rig.lights.size());
-        for (std::size_t k = 0; k < rig.lights.size(); ++k) {
-            to_light[k] = safe_normalize<Real>(rig.lights[k].position - point);
+    void compute(const std::vector<CameraLight<Real>>& lights, const Vec3<Real>& point, bool need_eye) {
+        to_light.resize(lights.size());
+        for (std::size_t k = 0; k < lights.size(); ++k) {
+            to_light[k] = safe_normalize<Real>(lights[k].position - point);
         }
-        to_eye = safe_normalize<Real>(-point);  // the eye is the camera-space origin
+        if (need_eye) to_eye = safe_normalize<Real>(-point);  // the eye is the camera-space origin
     }
 };
 
-/// The contract's formula with precomputed unit L and V; `normal` must be unit or zero.
+/// The contract's formula, asking per call which terms are on; every light.
 template <typename Real>
-Vec3<Real> shade(const LightRig<Real>& rig, const LightVectorsAt<Real>& vectors,
-                 const Vec3<Real>& normal, const Vec3<Real>& color) {
+Vec3<Real> shade_general(const LightRig<Real>& rig, const LightVectorsAt<Real>& vectors,
+                         const Vec3<Real>& normal, const Vec3<Real>& color) {
     Vec3<Real> result(Real(0));
-    if (rig.lighting.ambient) result += ambient_term<Real>(color, rig.material, rig.ambient);
+    if (rig.lighting.ambient) result += rig.ambient_factor * color;
     if (rig.lighting.diffuse || rig.lighting.specular) {
         for (std::size_t k = 0; k < rig.lights.size(); ++k) {
-            const Vec3<Real>& to_light = vectors.to_light[k];
             if (rig.lighting.diffuse) {
-                result += diffuse_from_direction<Real>(normal, color, to_light, rig.material,
+                result += diffuse_from_direction<Real>(normal, color, vectors.to_light[k], rig.material,
                                                        rig.lights[k].intensity);
             }
             if (rig.lighting.specular) {
-                result += specular_from_direction<Real>(normal, to_light, vectors.to_eye,
+                result += specular_from_direction<Real>(normal, vectors.to_light[k], vectors.to_eye,
                                                         rig.material, rig.lights[k].intensity);
             }
         }
     }
     return result;
 }
+
+/// The same formula compiled for one effect set; `vectors` holds the active lights only.
+template <typename Real, bool Ambient, bool Diffuse, bool Specular>
+Vec3<Real> shade_terms(const LightRig<Real>& rig, const LightVectorsAt<Real>& vectors,
+                       const Vec3<Real>& normal, const Vec3<Real>& color) {
+    Vec3<Real> result(Real(0));
+    if constexpr (Ambient) result += rig.ambient_factor * color;
+    if constexpr (Diffuse || Specular) {
+        for (std::size_t k = 0; k < rig.active_lights.size(); ++k) {
+            if constexpr (Diffuse) {
+                result += diffuse_from_direction<Real>(normal, color, vectors.to_light[k], rig.material,
+                                                       rig.active_lights[k].intensity);
+            }
+            if constexpr (Specular) {
+                result += specular_from_direction<Real>(normal, vectors.to_light[k], vectors.to_eye,
+                                                        rig.material, rig.active_lights[k].intensity);
+            }
+        }
+    }
+    return result;
+}
+
+/// Lights one point (a vertex, a triangle centroid): computes its vectors and
+/// evaluates either path. Used where a branch per point is negligible.
+template <typename Real>
+struct PointShader {
+    const LightRig<Real>* rig = nullptr;
+    EffectSet effects;
+    bool specialized = true;
+
+    Vec3<Real> operator()(LightVectorsAt<Real>& vectors, const Vec3<Real>& vector_origin,
+                          const Vec3<Real>& normal, const Vec3<Real>& color) const {
+        if (!specialized) {
+            vectors.compute(rig->lights, vector_origin, true);
+            return shade_general(*rig, vectors, normal, color);
+        }
+        if (effects.normals) vectors.compute(rig->active_lights, vector_origin, effects.specular);
+        const int key = (effects.ambient ? 4 : 0) | (effects.diffuse ? 2 : 0) | (effects.specular ? 1 : 0);
+        switch (key) {
+            case 0: return shade_terms<Real, false, false, false>(*rig, vectors, normal, color);
+            case 1: return shade_terms<Real, false, false, true>(*rig, vectors, normal, color);
+            case 2: return shade_terms<Real, false, true, false>(*rig, vectors, normal, color);
+            case 3: return shade_terms<Real, false, true, true>(*rig, vectors, normal, color);
+            case 4: return shade_terms<Real, true, false, false>(*rig, vectors, normal, color);
+            case 5: return shade_terms<Real, true, false, true>(*rig, vectors, normal, color);
+            case 6: return shade_terms<Real, true, true, false>(*rig, vectors, normal, color);
+            default: return shade_terms<Real, true, true, true>(*rig, vectors, normal, color);
+        }
+    }
+};
 
 }  // namespace phongrast::detail
 

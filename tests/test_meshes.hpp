@@ -66,6 +66,30 @@ inline phongrast::Mesh uv_sphere(int stacks, int slices, double radius) {
     return mesh;
 }
 
+/// Torus around the y axis (major radius R, minor r), outward faces: closed, genus 1.
+inline phongrast::Mesh torus(int rings, int sides, double major, double minor) {
+    phongrast::Mesh mesh;
+    const double pi = 3.14159265358979323846;
+    for (int i = 0; i < rings; ++i) {
+        const double u = 2 * pi * i / rings;
+        for (int j = 0; j < sides; ++j) {
+            const double v = 2 * pi * j / sides;
+            const double radius = major + minor * std::cos(v);
+            mesh.positions.push_back({radius * std::cos(u), minor * std::sin(v), -radius * std::sin(u)});
+        }
+    }
+    const auto at = [rings, sides](int i, int j) {
+        return std::uint32_t(((i + rings) % rings) * sides + ((j + sides) % sides));
+    };
+    for (int i = 0; i < rings; ++i) {
+        for (int j = 0; j < sides; ++j) {
+            mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    }
+    return mesh;
+}
+
 }  // namespace test_meshes
 
 #endif  // PHONGRAST_TESTS_TEST_MESHES_HPP

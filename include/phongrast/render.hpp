@@ -48,6 +48,11 @@ enum class Visibility {
     depth_buffer,  ///< per-sample nearest depth wins (not part of the contract; for comparison)
 };
 enum class Precision { single_float, double_float };
+/// Whether back faces of a closed mesh are skipped.
+enum class BackFaces {
+    draw,              ///< contract: every triangle is painted
+    cull_when_hidden,  ///< skip back faces when the mesh is closed and the eye is outside it (detected per render)
+};
 
 struct RenderOptions {
     LightVectors light_vectors = LightVectors::shaded_point;
@@ -59,6 +64,14 @@ struct RenderOptions {
     int samples_per_axis = 1;
     /// Worker threads; 0 uses every core. The image does not depend on it.
     int threads = 0;
+    /// Off by default in both presets: the contract paints every triangle, and culling
+    /// changes the pixels where painter's order shows a back face over a front face.
+    BackFaces back_faces = BackFaces::draw;
+    /// true: fill with a kernel compiled for exactly the effects the scene needs
+    /// (see EffectSet). false: the general kernel, which asks per sample which
+    /// terms are on. Both give the same image bit for bit; false exists to prove
+    /// that and to measure what specialisation saves.
+    bool specialize_effects = true;
 
     /// Exactly the contract's three seed simplifications, nothing else.
     static RenderOptions seed();
@@ -84,8 +97,21 @@ struct Scene {
     Lighting lighting = Lighting::full();
 };
 
+/// The effects a render really simulates: the lighting selection intersected
+/// with what the scene makes non-zero.
+struct EffectSet {
+    bool ambient = false;            ///< selected, and ka * Ia is non-zero
+    bool diffuse = false;            ///< selected, kd non-zero, and some light has non-zero intensity
+    bool specular = false;           ///< selected, ks non-zero, and some light has non-zero intensity
+    bool varying_colors = false;     ///< vertex colours are not all equal
+    bool normals = false;            ///< diffuse or specular: normals are needed at all
+    std::uint32_t active_lights = 0; ///< lights with non-zero intensity (the others cost nothing)
+};
+std::string to_string(const EffectSet& effects);
+
 struct RenderStats {
     std::uint64_t triangles_in = 0;
+    std::uint64_t triangles_culled = 0;      ///< back faces skipped (BackFaces::cull_when_hidden, closed mesh, eye outside)
     std::uint64_t triangles_degenerate = 0;  ///< zero projected area after snapping: cover nothing
     std::uint64_t triangles_dropped = 0;     ///< seed border rule: a vertex outside the image or behind the eye
     std::uint64_t triangles_clipped = 0;     ///< crossed the image border or the near plane and were clipped
@@ -93,6 +119,14 @@ struct RenderStats {
     std::uint64_t triangles_drawn = 0;       ///< reached the fill (possibly as several clipped pieces)
     std::uint64_t samples_shaded = 0;        ///< samples written (a sample is a pixel when samples_per_axis = 1)
     std::uint64_t nonfinite_values_replaced = 0;  ///< should stay 0: a last guard, counted so tests see it
+    /// Evaluations of each lighting term: one per light per shaded point
+    /// (vertex for Gouraud, sample for Phong, triangle for flat); ambient one per point.
+    std::uint64_t ambient_evaluations = 0;
+    std::uint64_t diffuse_evaluations = 0;
+    std::uint64_t specular_evaluations = 0;
+    std::uint64_t normal_interpolations = 0;  ///< samples where a normal was interpolated and renormalised
+    EffectSet effects;                        ///< what was simulated
+    bool back_faces_culled = false;           ///< the mesh was found closed with the eye outside, and culled
     double seconds = 0.0;                    ///< wall time of the whole render
 };
 
