@@ -53,41 +53,58 @@ using FillKernel = void (*)(const DrawTriangle<Real>&, FillTarget<Real>&, LightV
                             const FillSetup<Real>&);
 
 /// Visits the triangle's covered samples in the target's rows with
-/// interpolation weights w (summing to 1) and writes shade(w) there.
+/// interpolation weights w (summing to 1 up to rounding) and writes shade(w)
+/// there. Each span starts from weights derived from exact edge values and
+/// steps them by a constant per column.
 template <typename Real, bool Perspective, typename Shade>
 void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shade&& shade) {
     const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2);
     Image& image = target.image;
-    for_each_covered_pixel(draw.coverage, target.row_begin, target.row_end,
-                           [&](int row, int column, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
-        Real w[3] = {static_cast<Real>(e0) * inverse_area, static_cast<Real>(e1) * inverse_area,
-                     static_cast<Real>(e2) * inverse_area};
-        Real depth;
-        if constexpr (Perspective) {
-            // Weights linear in the triangle's plane: divide by depth, renormalise.
-            for (int i = 0; i < 3; ++i) w[i] *= draw.inverse_depth[i];
-            depth = Real(1) / (w[0] + w[1] + w[2]);
-            for (int i = 0; i < 3; ++i) w[i] *= depth;
-        } else {
-            depth = w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
-        }
-        const std::size_t index =
-            static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns) + static_cast<std::size_t>(column);
-        if (target.depth_test) {
-            // <= lets a later triangle at equal depth win, as in painter's order.
-            if (!(depth <= target.depth_buffer[index])) return;
-            target.depth_buffer[index] = depth;
-        }
-        glm::vec3 out(shade(w));
-        for (int channel = 0; channel < 3; ++channel) {
-            // Last guard: every input was validated finite, so this should never fire.
-            if (!std::isfinite(out[channel])) {
-                out[channel] = 0.0f;
-                ++target.replaced;
+    for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
+                          [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {
+        // q: screen-space weights, divided by depth when perspective-correct.
+        Real q[3], dq[3];
+        for (int i = 0; i < 3; ++i) {
+            q[i] = static_cast<Real>(e[i]) * inverse_area;
+            dq[i] = static_cast<Real>(step[i]) * inverse_area;
+            if constexpr (Perspective) {
+                q[i] *= draw.inverse_depth[i];
+                dq[i] *= draw.inverse_depth[i];
             }
         }
-        image.pixels[index] = out;
-        ++target.samples;
+        const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns);
+        std::uint64_t written = 0;
+        for (int k = 0; k < count; ++k) {
+            Real w[3] = {q[0] + dq[0] * static_cast<Real>(k), q[1] + dq[1] * static_cast<Real>(k),
+                         q[2] + dq[2] * static_cast<Real>(k)};
+            Real depth;
+            if constexpr (Perspective) {
+                // Weights linear in the triangle's plane: renormalise the depth-divided ones.
+                depth = Real(1) / (w[0] + w[1] + w[2]);
+                for (int i = 0; i < 3; ++i) w[i] *= depth;
+            } else {
+                depth = w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
+            }
+            const std::size_t index = row_start + static_cast<std::size_t>(first_column + k);
+            if (target.depth_test) {
+                // <= lets a later triangle at equal depth win, as in painter's order.
+                if (!(depth <= target.depth_buffer[index])) continue;
+                target.depth_buffer[index] = depth;
+            }
+            glm::vec3 out(shade(w));
+            if (!std::isfinite(out.x + out.y + out.z)) {
+                // Last guard: every input was validated finite, so this should never fire.
+                for (int channel = 0; channel < 3; ++channel) {
+                    if (!std::isfinite(out[channel])) {
+                        out[channel] = 0.0f;
+                        ++target.replaced;
+                    }
+                }
+            }
+            image.pixels[index] = out;
+            ++written;
+        }
+        target.samples += written;
     });
 }
 

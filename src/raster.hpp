@@ -47,9 +47,11 @@ struct SnappedPoint {
     std::int64_t y = 0;  ///< row * 256, rounded to nearest
 };
 
+/// Rounds to the nearest 1/256 pixel (ties to even, the default rounding
+/// mode; llrint compiles to one instruction with -fno-math-errno, llround to a call).
 inline SnappedPoint snap(double column, double row) {
-    return {static_cast<std::int64_t>(std::llround(column * double(kSubpixelScale))),
-            static_cast<std::int64_t>(std::llround(row * double(kSubpixelScale)))};
+    return {static_cast<std::int64_t>(std::llrint(column * double(kSubpixelScale))),
+            static_cast<std::int64_t>(std::llrint(row * double(kSubpixelScale)))};
 }
 
 inline std::int64_t edge_value(const SnappedPoint& a, const SnappedPoint& b, std::int64_t px,
@@ -64,11 +66,32 @@ inline std::int64_t floor_div(std::int64_t numerator, std::int64_t denominator) 
     return quotient;
 }
 
+/// Smallest k with step * k >= need, for step > 0: ceil(need / step). The
+/// quotient is estimated in double (one fast division instead of a slow
+/// 64-bit integer one) and then corrected with exact integer products, so the
+/// result is exact.
+inline std::int64_t first_at_least(std::int64_t need, std::int64_t step) {
+    std::int64_t k =
+        static_cast<std::int64_t>(std::ceil(static_cast<double>(need) / static_cast<double>(step)));
+    while (step * k < need) ++k;
+    while (step * (k - 1) >= need) --k;
+    return k;
+}
+
+/// Largest k with step * k <= limit, for step > 0: floor(limit / step), exact likewise.
+inline std::int64_t last_at_most(std::int64_t limit, std::int64_t step) {
+    std::int64_t k =
+        static_cast<std::int64_t>(std::floor(static_cast<double>(limit) / static_cast<double>(step)));
+    while (step * k > limit) --k;
+    while (step * (k + 1) <= limit) ++k;
+    return k;
+}
+
 /// A triangle ready for coverage: vertices ordered so that area2 > 0.
 struct CoverageTriangle {
     SnappedPoint v[3];
-    std::int64_t area2 = 0;  ///< E_01(v2) = twice the area in (1/256 px)^2
-    bool swapped = false;    ///< true if input vertices 1 and 2 were exchanged
+    std::int64_t area2 = 0;               ///< E_01(v2) = twice the area in (1/256 px)^2
+    bool swapped = false;                 ///< true if input vertices 1 and 2 were exchanged
     int row_min = 0, row_max = -1;        ///< pixel rows whose centres may be covered
     int column_min = 0, column_max = -1;  ///< pixel columns likewise
 };
@@ -76,8 +99,8 @@ struct CoverageTriangle {
 /// Sets up coverage for snapped vertices a, b, c inside an image of rows x
 /// columns. Returns false if the triangle has zero area (it covers no centre)
 /// or no pixel centre of the image lies in its bounding box.
-inline bool setup_coverage(const SnappedPoint& a, const SnappedPoint& b, const SnappedPoint& c,
-                           int rows, int columns, CoverageTriangle& out) {
+inline bool setup_coverage(const SnappedPoint& a, const SnappedPoint& b, const SnappedPoint& c, int rows,
+                           int columns, CoverageTriangle& out) {
     assert(std::abs(a.x) <= kMaxSnappedMagnitude && std::abs(a.y) <= kMaxSnappedMagnitude);
     assert(std::abs(b.x) <= kMaxSnappedMagnitude && std::abs(b.y) <= kMaxSnappedMagnitude);
     assert(std::abs(c.x) <= kMaxSnappedMagnitude && std::abs(c.y) <= kMaxSnappedMagnitude);
@@ -111,25 +134,21 @@ inline bool setup_coverage(const SnappedPoint& a, const SnappedPoint& b, const S
     return out.row_min <= out.row_max && out.column_min <= out.column_max;
 }
 
-/// Calls visit(row, column, e0, e1, e2) for every pixel centre in rows
-/// [row_begin, row_end) that the triangle covers, where e_i is the unbiased
-/// edge value opposite vertex i (so e_i / area2 is vertex i's screen-space
-/// barycentric weight). Each row's covered span is solved exactly from the
-/// three edge functions, so thin slivers cost their length, not their box.
-template <typename Visit>
-void for_each_covered_pixel(const CoverageTriangle& t, int row_begin, int row_end, Visit&& visit) {
-    struct Edge {
-        std::int64_t at_origin;  ///< value at the centre of pixel (row_min, column_min)
-        std::int64_t step_column;
-        std::int64_t step_row;
-        std::int64_t threshold;  ///< 0 for top-left edges (E >= 0 owns), 1 otherwise (E > 0)
-    };
-    Edge edges[3];
-    const std::int64_t origin_x = std::int64_t(t.column_min) * kSubpixelScale + kHalfPixel;
+/// Calls visit_span(row, first_column, count, e, step) for every row in
+/// [row_begin, row_end) where the triangle covers pixel centres: the covered
+/// centres of a row are contiguous (the triangle is convex), e[i] is the
+/// unbiased edge value opposite vertex i at the first of them (so e[i] / area2
+/// is vertex i's screen-space barycentric weight there) and step[i] its change
+/// per column. Each row's span is solved exactly from the three edge
+/// functions, so thin slivers cost their length, not their bounding box.
+template <typename VisitSpan>
+void for_each_covered_span(const CoverageTriangle& t, int row_begin, int row_end, VisitSpan&& visit_span) {
     const int first_row = std::max(row_begin, t.row_min);
     const int last_row = std::min(row_end - 1, t.row_max);
     if (first_row > last_row) return;
+    const std::int64_t origin_x = std::int64_t(t.column_min) * kSubpixelScale + kHalfPixel;
     const std::int64_t origin_y = std::int64_t(first_row) * kSubpixelScale + kHalfPixel;
+    std::int64_t at_origin[3], step_column[3], step_row[3], threshold[3];
     for (int i = 0; i < 3; ++i) {
         // Edge opposite vertex i runs from vertex i+1 to vertex i+2.
         const SnappedPoint& a = t.v[(i + 1) % 3];
@@ -137,38 +156,64 @@ void for_each_covered_pixel(const CoverageTriangle& t, int row_begin, int row_en
         const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
         const bool top = (dy == 0 && dx > 0);
         const bool left = (dy < 0);
-        edges[i].at_origin = edge_value(a, b, origin_x, origin_y);
-        edges[i].step_column = -dy * kSubpixelScale;
-        edges[i].step_row = dx * kSubpixelScale;
-        edges[i].threshold = (top || left) ? 0 : 1;
+        at_origin[i] = edge_value(a, b, origin_x, origin_y);
+        step_column[i] = -dy * kSubpixelScale;
+        step_row[i] = dx * kSubpixelScale;
+        threshold[i] = (top || left) ? 0 : 1;  // top-left edges own the centres on them
     }
 
     const std::int64_t span_columns = t.column_max - t.column_min;
     for (int row = first_row; row <= last_row; ++row) {
         const std::int64_t row_offset = row - first_row;
-        std::int64_t k_lo = 0, k_hi = span_columns;
         std::int64_t value[3];
-        for (int i = 0; i < 3; ++i) {
-            const Edge& e = edges[i];
-            value[i] = e.at_origin + e.step_row * row_offset;
-            // Solve value + step * k >= threshold for the integer k in [k_lo, k_hi].
-            const std::int64_t need = e.threshold - value[i];
-            if (e.step_column > 0) {
-                k_lo = std::max(k_lo, -floor_div(-need, e.step_column));
-            } else if (e.step_column < 0) {
-                k_hi = std::min(k_hi, floor_div(-need, -e.step_column));
-            } else if (need > 0) {
-                k_hi = -1;
+        for (int i = 0; i < 3; ++i) value[i] = at_origin[i] + step_row[i] * row_offset;
+        std::int64_t k_lo = 0, k_hi = span_columns;
+        if (span_columns < 16) {
+            // Narrow (under 16 columns): walk the row with incremental edge values; cheaper than dividing.
+            std::int64_t e0 = value[0], e1 = value[1], e2 = value[2];
+            std::int64_t k = 0;
+            for (; k <= span_columns; ++k, e0 += step_column[0], e1 += step_column[1], e2 += step_column[2]) {
+                if (e0 >= threshold[0] && e1 >= threshold[1] && e2 >= threshold[2]) break;
             }
+            if (k > span_columns) continue;
+            k_lo = k;
+            for (++k, e0 += step_column[0], e1 += step_column[1], e2 += step_column[2]; k <= span_columns;
+                 ++k, e0 += step_column[0], e1 += step_column[1], e2 += step_column[2]) {
+                if (!(e0 >= threshold[0] && e1 >= threshold[1] && e2 >= threshold[2])) break;
+            }
+            k_hi = k - 1;
+        } else {
+            for (int i = 0; i < 3; ++i) {
+                // The integer k in [k_lo, k_hi] with value + step * k >= threshold.
+                const std::int64_t need = threshold[i] - value[i];
+                if (step_column[i] > 0) {
+                    k_lo = std::max(k_lo, first_at_least(need, step_column[i]));
+                } else if (step_column[i] < 0) {
+                    k_hi = std::min(k_hi, last_at_most(-need, -step_column[i]));
+                } else if (need > 0) {
+                    k_hi = -1;
+                }
+            }
+            if (k_lo > k_hi) continue;
         }
-        for (std::int64_t k = k_lo; k <= k_hi; ++k) {
-            const std::int64_t e0 = value[0] + edges[0].step_column * k;
-            const std::int64_t e1 = value[1] + edges[1].step_column * k;
-            const std::int64_t e2 = value[2] + edges[2].step_column * k;
-            assert(e0 >= edges[0].threshold && e1 >= edges[1].threshold && e2 >= edges[2].threshold);
-            visit(row, t.column_min + static_cast<int>(k), e0, e1, e2);
-        }
+        const std::int64_t e[3] = {value[0] + step_column[0] * k_lo, value[1] + step_column[1] * k_lo,
+                                   value[2] + step_column[2] * k_lo};
+        visit_span(row, t.column_min + static_cast<int>(k_lo), static_cast<int>(k_hi - k_lo + 1), e,
+                   step_column);
     }
+}
+
+/// Calls visit(row, column, e0, e1, e2) for every covered pixel centre in rows
+/// [row_begin, row_end), with the unbiased edge values of for_each_covered_span.
+template <typename Visit>
+void for_each_covered_pixel(const CoverageTriangle& t, int row_begin, int row_end, Visit&& visit) {
+    for_each_covered_span(
+        t, row_begin, row_end,
+        [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {
+            for (int k = 0; k < count; ++k) {
+                visit(row, first_column + k, e[0] + step[0] * k, e[1] + step[1] * k, e[2] + step[2] * k);
+            }
+        });
 }
 
 }  // namespace phongrast::detail

@@ -63,6 +63,14 @@ void validate_scene_values(const Scene& scene) {
     validate_mesh(scene.mesh);
 }
 
+/// The set-up triangles in painter's order, without copying them out of the
+/// per-chunk vectors they were built in.
+template <typename Real>
+struct DrawList {
+    std::vector<std::vector<DrawTriangle<Real>>> chunks;
+    std::vector<const DrawTriangle<Real>*> ordered;
+};
+
 struct SetupCounts {
     std::uint64_t degenerate = 0, dropped = 0, clipped = 0, outside = 0, drawn = 0, culled = 0;
     std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during setup
@@ -92,7 +100,7 @@ public:
             count_point_evaluations(varyings_.size(), stats);
         }
         const std::vector<std::uint32_t> order = painter_order();
-        const std::vector<DrawTriangle<Real>> draws = set_up_triangles(order, stats);
+        const DrawList<Real> draws = set_up_triangles(order, stats);
         return fill(draws, stats);
     }
 
@@ -209,8 +217,7 @@ private:
     }
 
     // ---- Triangle setup -----------------------------------------------------------
-    std::vector<DrawTriangle<Real>> set_up_triangles(const std::vector<std::uint32_t>& order,
-                                                     RenderStats& stats) const {
+    DrawList<Real> set_up_triangles(const std::vector<std::uint32_t>& order, RenderStats& stats) const {
         // Fixed-size chunks, concatenated in chunk order: the draw list is the
         // same whatever the number of threads.
         const std::size_t chunks = (order.size() + kSetupChunk - 1) / kSetupChunk;
@@ -224,12 +231,12 @@ private:
                 set_up_triangle(order[k], chunk_draws[chunk], chunk_counts[chunk]);
             }
         });
-        std::vector<DrawTriangle<Real>> draws;
+        DrawList<Real> draws;
         std::size_t total = 0;
         for (const auto& d : chunk_draws) total += d.size();
-        draws.reserve(total);
+        draws.ordered.reserve(total);
         for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-            draws.insert(draws.end(), chunk_draws[chunk].begin(), chunk_draws[chunk].end());
+            for (const DrawTriangle<Real>& draw : chunk_draws[chunk]) draws.ordered.push_back(&draw);
             stats.triangles_degenerate += chunk_counts[chunk].degenerate;
             stats.triangles_dropped += chunk_counts[chunk].dropped;
             stats.triangles_clipped += chunk_counts[chunk].clipped;
@@ -238,6 +245,7 @@ private:
             stats.triangles_culled += chunk_counts[chunk].culled;
             count_point_evaluations(chunk_counts[chunk].lit_points, stats);
         }
+        draws.chunks = std::move(chunk_draws);  // moving a vector keeps its elements' addresses
         return draws;
     }
 
@@ -266,6 +274,14 @@ private:
             return;
         }
 
+        const Vec3<Real> centroid =
+            (varyings_[tri[0]].position + varyings_[tri[1]].position + varyings_[tri[2]].position) / Real(3);
+        if (inside_image && camera_depth_[tri[0]] >= near_ && camera_depth_[tri[1]] >= near_ &&
+            camera_depth_[tri[2]] >= near_) {
+            set_up_unclipped(tri, centroid, out, counts);
+            return;
+        }
+
         ClipPolygon<Real> polygon;
         polygon.count = 3;
         for (int i = 0; i < 3; ++i) {
@@ -275,10 +291,11 @@ private:
             v.column = column_[tri[i]];
             v.row = row_[tri[i]];
         }
-        const Vec3<Real> centroid = (polygon.vertices[0].varyings.position +
-                                     polygon.vertices[1].varyings.position +
-                                     polygon.vertices[2].varyings.position) / Real(3);
-        if (scene_.shader == Shader::gouraud) counts.lit_points += light_corners(polygon, centroid);
+        if (scene_.shader == Shader::gouraud) {
+            Varyings<Real>* corners[3] = {&polygon.vertices[0].varyings, &polygon.vertices[1].varyings,
+                                          &polygon.vertices[2].varyings};
+            counts.lit_points += light_corners(corners, centroid);
+        }
 
         bool clipped = !inside_image;
         if (!clip_to_view(polygon)) {
@@ -326,6 +343,42 @@ private:
         }
     }
 
+    // The common case, with nothing to clip: no polygon, one draw triangle
+    // straight from the vertex arrays.
+    void set_up_unclipped(const Triangle& tri, const Vec3<Real>& centroid, std::vector<DrawTriangle<Real>>& out,
+                          SetupCounts& counts) const {
+        DrawTriangle<Real> draw;
+        const SnappedPoint a = snap(column_[tri[0]], row_[tri[0]]);
+        const SnappedPoint b = snap(column_[tri[1]], row_[tri[1]]);
+        const SnappedPoint c = snap(column_[tri[2]], row_[tri[2]]);
+        if (!setup_coverage(a, b, c, frame_.rows, frame_.columns, draw.coverage)) {
+            if (draw.coverage.area2 == 0) {
+                ++counts.degenerate;
+            } else {
+                ++counts.outside;
+            }
+            return;
+        }
+        std::uint32_t index[3] = {tri[0], tri[1], tri[2]};
+        if (draw.coverage.swapped) std::swap(index[1], index[2]);
+        for (int i = 0; i < 3; ++i) {
+            draw.v[i] = varyings_[index[i]];
+            draw.depth[i] = static_cast<Real>(camera_depth_[index[i]]);
+            draw.inverse_depth[i] = Real(1) / draw.depth[i];
+        }
+        draw.centroid = centroid;
+        if (scene_.shader == Shader::flat) {
+            const Vec3<Real> lit = flat_color(tri, centroid);
+            for (Varyings<Real>& v : draw.v) v.lit = lit;
+            ++counts.lit_points;
+        } else if (scene_.shader == Shader::gouraud) {
+            Varyings<Real>* corners[3] = {&draw.v[0], &draw.v[1], &draw.v[2]};
+            counts.lit_points += light_corners(corners, centroid);
+        }
+        out.push_back(draw);
+        ++counts.drawn;
+    }
+
     // A back face: its vertices run clockwise seen from the eye (for an
     // outward-oriented mesh), decided in double in world space.
     bool faces_away(const Triangle& tri) const {
@@ -352,11 +405,11 @@ private:
     // Gouraud with the seed's centroid vectors: lights the triangle's own
     // corners (before clipping, so clipped corners interpolate lit colours).
     // Returns the points lit.
-    std::uint64_t light_corners(ClipPolygon<Real>& polygon, const Vec3<Real>& centroid) const {
+    std::uint64_t light_corners(Varyings<Real>* const corners[3], const Vec3<Real>& centroid) const {
         thread_local LightVectorsAt<Real> vectors;
         if (scene_.shader == Shader::gouraud && options_.light_vectors == LightVectors::triangle_centroid) {
             for (int i = 0; i < 3; ++i) {
-                Varyings<Real>& v = polygon.vertices[i].varyings;
+                Varyings<Real>& v = *corners[i];
                 v.lit = point_shader_(vectors, centroid, v.normal, v.color);
             }
             return 3;
@@ -423,7 +476,8 @@ private:
     }
 
     // ---- Fill ---------------------------------------------------------------------
-    Image fill(const std::vector<DrawTriangle<Real>>& draws, RenderStats& stats) const {
+    Image fill(const DrawList<Real>& list, RenderStats& stats) const {
+        const std::vector<const DrawTriangle<Real>*>& draws = list.ordered;
         Image image(frame_.rows, frame_.columns, scene_.image.background);
         const bool depth_test = options_.visibility == Visibility::depth_buffer;
         std::vector<Real> depth_buffer(depth_test ? image.pixels.size() : 0,
@@ -431,15 +485,31 @@ private:
         const int bands = (frame_.rows + kBandRows - 1) / kBandRows;
         std::vector<std::uint64_t> shaded(bands, 0), replaced(bands, 0);
 
+        // Bin the draws by band, keeping painter's order within each band.
+        std::vector<std::uint32_t> band_start(static_cast<std::size_t>(bands) + 1, 0);
+        for (const DrawTriangle<Real>* draw : draws) {
+            for (int band = draw->coverage.row_min / kBandRows; band <= draw->coverage.row_max / kBandRows; ++band) {
+                ++band_start[static_cast<std::size_t>(band) + 1];
+            }
+        }
+        for (int band = 0; band < bands; ++band) band_start[band + 1] += band_start[band];
+        std::vector<std::uint32_t> binned(band_start[bands]);
+        {
+            std::vector<std::uint32_t> cursor(band_start.begin(), band_start.end() - 1);
+            for (std::size_t d = 0; d < draws.size(); ++d) {
+                const CoverageTriangle& c = draws[d]->coverage;
+                for (int band = c.row_min / kBandRows; band <= c.row_max / kBandRows; ++band) {
+                    binned[cursor[band]++] = static_cast<std::uint32_t>(d);
+                }
+            }
+        }
+
         tbb::parallel_for(0, bands, [&](int band) {
             FillTarget<Real> target{image, depth_buffer, band * kBandRows,
                                     std::min(frame_.rows, (band + 1) * kBandRows), depth_test, 0, 0};
             LightVectorsAt<Real> vectors;
-            for (const DrawTriangle<Real>& draw : draws) {
-                if (draw.coverage.row_max < target.row_begin || draw.coverage.row_min >= target.row_end) {
-                    continue;
-                }
-                kernel_(draw, target, vectors, fill_setup_);
+            for (std::uint32_t i = band_start[band]; i < band_start[band + 1]; ++i) {
+                kernel_(*draws[binned[i]], target, vectors, fill_setup_);
             }
             shaded[band] = target.samples;
             replaced[band] = target.replaced;
