@@ -12,6 +12,7 @@
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -79,10 +80,13 @@ struct SetupCounts {
 template <typename Real>
 class Pipeline {
 public:
-    Pipeline(const Scene& scene, const RenderOptions& options, int rows, int columns)
+    /// sample_offset: where in each pixel, relative to its centre, this render
+    /// samples (in pixels); the geometry is shifted by minus it (rotated grid).
+    Pipeline(const Scene& scene, const RenderOptions& options, int rows, int columns,
+             glm::dvec2 sample_offset = glm::dvec2(0.0))
         : scene_(scene), options_(options),
           frame_(make_camera_frame(scene.camera, rows, columns)),
-          near_(scene.camera.focal * kNearPlaneOverFocal) {}
+          near_(scene.camera.focal * kNearPlaneOverFocal), sample_offset_(sample_offset) {}
 
     Image run(RenderStats& stats) {
         effects_ = find_effects(scene_);
@@ -127,8 +131,8 @@ private:
                 camera_depth_[i] = camera.z;
                 if (camera.z > 0.0) {
                     const ProjectedPoint p = frame_.pixel_from_camera(camera);
-                    column_[i] = p.column;
-                    row_[i] = p.row;
+                    column_[i] = p.column - sample_offset_.x;
+                    row_[i] = p.row - sample_offset_.y;
                 } else {
                     column_[i] = row_[i] = std::numeric_limits<double>::quiet_NaN();
                 }
@@ -249,15 +253,17 @@ private:
         return draws;
     }
 
+    // The seed's rule looks at the unshifted vertex, whatever the sample offset.
     bool vertex_inside_image(std::uint32_t i) const {
-        return camera_depth_[i] > 0.0 && column_[i] >= 0.0 && column_[i] <= frame_.columns &&
-               row_[i] >= 0.0 && row_[i] <= frame_.rows;
+        const double column = column_[i] + sample_offset_.x, row = row_[i] + sample_offset_.y;
+        return camera_depth_[i] > 0.0 && column >= 0.0 && column <= frame_.columns && row >= 0.0 &&
+               row <= frame_.rows;
     }
 
     void project(ClipVertex<Real>& v) const {
         const ProjectedPoint p = frame_.pixel_from_camera(glm::dvec3(v.varyings.position));
-        v.column = p.column;
-        v.row = p.row;
+        v.column = p.column - sample_offset_.x;
+        v.row = p.row - sample_offset_.y;
     }
 
     void set_up_triangle(std::uint32_t source, std::vector<DrawTriangle<Real>>& out,
@@ -542,6 +548,7 @@ private:
     RenderOptions options_;
     CameraFrame frame_;
     double near_;
+    glm::dvec2 sample_offset_;
     EffectSet effects_;
     HiddenBackFaces hidden_back_faces_ = HiddenBackFaces::unknown;
     LightRig<Real> rig_;
@@ -551,6 +558,26 @@ private:
     std::vector<double> camera_depth_, column_, row_;
     std::vector<Varyings<Real>> varyings_;
 };
+
+// Rotated grid: sample k = i * s + j of an s x s set sits at
+//   column offset (i s + j + 1/2) / s^2 - 1/2,  row offset (j s + (s - 1 - i) + 1/2) / s^2 - 1/2,
+// a lattice whose s^2 samples all have distinct columns and distinct rows
+// (for s = 2: (+-1/8, +-3/8) and (+-3/8, -+1/8), the classic rotated grid).
+// The offsets are multiples of 1/(2 s^2) pixel, exact after 1/256 snapping for s <= 8.
+glm::dvec2 rotated_grid_offset(int i, int j, int s) {
+    const double cells = double(s) * double(s);
+    return {(double(i * s + j) + 0.5) / cells - 0.5, (double(j * s + (s - 1 - i)) + 0.5) / cells - 0.5};
+}
+
+// Adds one pass's sample work to the total; triangle counts come from the first pass.
+void add_pass_stats(const RenderStats& pass, RenderStats& total) {
+    total.samples_shaded += pass.samples_shaded;
+    total.nonfinite_values_replaced += pass.nonfinite_values_replaced;
+    total.ambient_evaluations += pass.ambient_evaluations;
+    total.diffuse_evaluations += pass.diffuse_evaluations;
+    total.specular_evaluations += pass.specular_evaluations;
+    total.normal_interpolations += pass.normal_interpolations;
+}
 
 Image box_downsample(const Image& fine, int factor, int rows, int columns) {
     Image coarse(rows, columns);
@@ -603,6 +630,35 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
                                             static_cast<int>(fine_columns));
             return pipeline.run(result.stats);
         };
+        if (factor > 1 && options.sample_pattern == SamplePattern::rotated_grid) {
+            // One render per sample at the final size, averaged like box_downsample does.
+            const auto pass = [&](auto real_tag, glm::dvec2 offset, RenderStats& stats) {
+                using Real = decltype(real_tag);
+                detail::Pipeline<Real> pipeline(scene, options, scene.image.rows, scene.image.columns, offset);
+                return pipeline.run(stats);
+            };
+            Image sum(scene.image.rows, scene.image.columns);
+            for (int i = 0; i < factor; ++i) {
+                for (int j = 0; j < factor; ++j) {
+                    const glm::dvec2 offset = detail::rotated_grid_offset(i, j, factor);
+                    RenderStats pass_stats;
+                    pass_stats.triangles_in = result.stats.triangles_in;
+                    const Image image = options.precision == Precision::double_float
+                                            ? pass(double{}, offset, pass_stats)
+                                            : pass(float{}, offset, pass_stats);
+                    for (std::size_t p = 0; p < sum.pixels.size(); ++p) sum.pixels[p] += image.pixels[p];
+                    if (i == 0 && j == 0) {
+                        result.stats = pass_stats;
+                    } else {
+                        detail::add_pass_stats(pass_stats, result.stats);
+                    }
+                }
+            }
+            const float weight = 1.0f / static_cast<float>(factor * factor);
+            for (glm::vec3& pixel : sum.pixels) pixel *= weight;
+            result.image = std::move(sum);
+            return;
+        }
         Image fine = options.precision == Precision::double_float ? run(double{}) : run(float{});
         result.image = factor == 1 ? std::move(fine)
                                    : detail::box_downsample(fine, factor, scene.image.rows,

@@ -48,6 +48,13 @@ enum class Visibility {
     depth_buffer,  ///< per-sample nearest depth wins (not part of the contract; for comparison)
 };
 enum class Precision { single_float, double_float };
+/// Where the samples_per_axis^2 samples of a pixel lie (box-filtered either way).
+enum class SamplePattern {
+    ordered_grid,  ///< an s x s grid: one render of an image s times larger, then averaged
+    rotated_grid,  ///< s^2 samples with s^2 distinct columns and rows (for s = 2 the classic
+                   ///< rotated-grid pattern): one render per sample, each with the geometry
+                   ///< shifted by minus that sample's offset, then averaged
+};
 /// Whether back faces of a closed mesh are skipped.
 enum class BackFaces {
     draw,              ///< contract: every triangle is painted
@@ -60,8 +67,10 @@ struct RenderOptions {
     BorderPolicy border = BorderPolicy::clip;
     Visibility visibility = Visibility::painter;
     Precision precision = Precision::single_float;
-    /// Samples per pixel = samples_per_axis^2 on an ordered grid, box-filtered. 1 = centre only.
+    /// Samples per pixel = samples_per_axis^2, box-filtered. 1 = centre only.
     int samples_per_axis = 1;
+    /// Placement of those samples; ignored when samples_per_axis is 1.
+    SamplePattern sample_pattern = SamplePattern::ordered_grid;
     /// Worker threads; 0 uses every core. The image does not depend on it.
     int threads = 0;
     /// Off by default in both presets: the contract paints every triangle, and culling
