@@ -1,0 +1,252 @@
+#!/usr/bin/env python3
+"""Turns bench_effects' JSON output into the Markdown tables of docs/performance.md.
+
+Usage: effects_table.py RESULTS.json [> tables.md]
+
+Reads the median (and cv) aggregates of a run made with
+--benchmark_repetitions=N --benchmark_report_aggregates_only=true, and prints:
+  * each effect set's median time, specialised kernel against the general one
+    (RenderOptions::specialize_effects = false, the baseline in the same run);
+  * the issue's targets: ambient-only Phong against ambient-only Gouraud, a
+    least-squares line through time against lights, the culling speedup.
+Python 3 standard library only.
+"""
+import json
+import sys
+
+EFFECTS = ["ambient", "diffuse", "specular", "full", "full-kd0", "full-ks0"]
+SHADERS = ["flat", "gouraud", "phong"]
+LIGHTS = [0, 1, 2, 4, 8]
+FIT_LIGHTS = [1, 2, 4, 8]  # 0 lights is a different effect set (ambient only), kept out of the fit
+AMBIENT_TARGET = 1.10
+
+
+def parse_name(run_name):
+    """'effects/mesh=x/shader=phong/.../threads=1/real_time' -> dict of the key=value parts."""
+    fields = {}
+    for part in run_name.split("/")[1:]:
+        if "=" in part:
+            key, value = part.split("=", 1)
+            fields[key] = value
+    return fields
+
+
+def load(path):
+    with open(path, encoding="utf-8") as f:
+        data = json.load(f)
+    runs = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") != "aggregate":
+            continue
+        fields = parse_name(b["run_name"])
+        key = tuple(sorted(fields.items()))
+        entry = runs.setdefault(key, {"fields": fields})
+        if b["aggregate_name"] == "median":
+            entry["ms"] = to_ms(b["real_time"], b["time_unit"])
+            entry["label"] = b.get("label", "")
+            for counter in ("samples", "drawn", "culled", "diffuse_evals", "specular_evals", "normal_interps"):
+                if counter in b:
+                    entry[counter] = b[counter]
+            entry["repetitions"] = b.get("repetitions")
+        elif b["aggregate_name"] == "cv":
+            entry["cv"] = b["real_time"]  # a fraction
+    return data.get("context", {}), runs
+
+
+def to_ms(value, unit):
+    return value * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[unit]
+
+
+class Runs:
+    def __init__(self, runs):
+        self.runs = runs
+
+    def get(self, **fields):
+        defaults = {"lights": "2", "dark": "0", "kernel": "special", "cull": "off", "effect": "full"}
+        wanted = dict(defaults)
+        wanted.update({k: str(v) for k, v in fields.items()})
+        key = tuple(sorted(wanted.items()))
+        return self.runs.get(key)
+
+    def ms(self, **fields):
+        run = self.get(**fields)
+        return run["ms"] if run and "ms" in run else None
+
+    def meshes(self):
+        seen = []
+        for entry in self.runs.values():
+            mesh = entry["fields"].get("mesh")
+            if mesh not in seen:
+                seen.append(mesh)
+        return seen
+
+    def threads(self):
+        return sorted({int(e["fields"]["threads"]) for e in self.runs.values()})
+
+
+def fmt(ms):
+    return "—" if ms is None else (f"{ms:.2f}" if ms < 100 else f"{ms:.0f}")
+
+
+def ratio(a, b):
+    return "—" if a is None or b is None or b == 0 else f"{a / b:.2f}"
+
+
+def fit_line(xs, ys):
+    """Least squares y = a + b x; returns (a, b, r2, worst relative residual)."""
+    n = len(xs)
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxx = sum((x - mx) ** 2 for x in xs)
+    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
+    b = sxy / sxx
+    a = my - b * mx
+    ss_tot = sum((y - my) ** 2 for y in ys)
+    ss_res = sum((y - (a + b * x)) ** 2 for x, y in zip(xs, ys))
+    r2 = 1.0 - ss_res / ss_tot if ss_tot > 0 else 1.0
+    worst = max(abs(y - (a + b * x)) / (a + b * x) for x, y in zip(xs, ys))
+    return a, b, r2, worst
+
+
+def mesh_summary(runs, mesh):
+    run = runs.get(mesh=mesh, shader="phong", threads=1)
+    if not run:
+        return ""
+    return f"{int(run.get('drawn', 0)):,} triangles drawn, {int(run.get('samples', 0)):,} pixels shaded"
+
+
+def effect_table(runs, mesh, out):
+    threads = runs.threads()
+    if runs.ms(mesh=mesh, shader="phong", effect="ambient", threads=1) is None:
+        return
+    out.append(f"#### {mesh} ({mesh_summary(runs, mesh)}), 2 lights\n")
+    header = "| effect set | shader |"
+    rule = "|---|---|"
+    for t in threads:
+        header += f" {t} thr: specialised ms | general ms | general ÷ specialised |"
+        rule += "---:|---:|---:|"
+    out += [header, rule]
+    for effect in EFFECTS:
+        for shader in SHADERS:
+            row = f"| {effect} | {shader} |"
+            for t in threads:
+                s = runs.ms(mesh=mesh, shader=shader, effect=effect, threads=t)
+                g = runs.ms(mesh=mesh, shader=shader, effect=effect, threads=t, kernel="general")
+                row += f" {fmt(s)} | {fmt(g)} | {ratio(g, s)} |"
+            out.append(row)
+    out.append("")
+
+
+def ambient_target_table(runs, out):
+    out.append("| mesh | threads | ambient Phong ms | ambient Gouraud ms | Phong ÷ Gouraud | target ≤ 1.10 "
+               "| general-kernel ambient Phong ÷ Gouraud |")
+    out.append("|---|---:|---:|---:|---:|---|---:|")
+    for mesh in runs.meshes():
+        for t in runs.threads():
+            p = runs.ms(mesh=mesh, shader="phong", effect="ambient", threads=t)
+            g = runs.ms(mesh=mesh, shader="gouraud", effect="ambient", threads=t)
+            if p is None or g is None:
+                continue
+            pg = runs.ms(mesh=mesh, shader="phong", effect="ambient", threads=t, kernel="general")
+            gg = runs.ms(mesh=mesh, shader="gouraud", effect="ambient", threads=t, kernel="general")
+            verdict = "met" if p / g <= AMBIENT_TARGET else f"missed by {100 * (p / g - AMBIENT_TARGET):.0f} points"
+            out.append(f"| {mesh} | {t} | {fmt(p)} | {fmt(g)} | {p / g:.2f} | {verdict} | {ratio(pg, gg)} |")
+    out.append("")
+
+
+def lights_table(runs, mesh, out):
+    columns = []
+    for t in runs.threads():
+        for shader in ("gouraud", "phong"):
+            for kernel in ("special", "general"):
+                if runs.ms(mesh=mesh, shader=shader, lights=1, kernel=kernel, threads=t) is not None:
+                    columns.append((shader, kernel, t))
+    if not columns:
+        return
+    out.append(f"#### {mesh}: full lighting, median ms against the number of lights\n")
+    names = {"special": "spec.", "general": "gen."}
+    out.append("| lights | " + " | ".join(f"{s} {names[k]} {t} thr" for s, k, t in columns) + " |")
+    out.append("|---|" + "---:|" * len(columns))
+    for n in LIGHTS:
+        cells = [fmt(runs.ms(mesh=mesh, shader=s, lights=n, kernel=k, threads=t)) for s, k, t in columns]
+        out.append(f"| {n} | " + " | ".join(cells) + " |")
+    cells = [fmt(runs.ms(mesh=mesh, shader=s, lights=2, dark=6, kernel=k, threads=t)) for s, k, t in columns]
+    out.append("| 2 + 6 of zero intensity | " + " | ".join(cells) + " |")
+    cells = []
+    for s, k, t in columns:
+        two = runs.ms(mesh=mesh, shader=s, lights=2, kernel=k, threads=t)
+        dark = runs.ms(mesh=mesh, shader=s, lights=2, dark=6, kernel=k, threads=t)
+        cells.append(ratio(dark, two))
+    out.append("| (2 + 6 dark) ÷ 2 | " + " | ".join(cells) + " |")
+    fits = {"ms per light (slope)": [], "intercept ms": [], "R²": [], "worst residual": []}
+    for s, k, t in columns:
+        ys = [runs.ms(mesh=mesh, shader=s, lights=n, kernel=k, threads=t) for n in FIT_LIGHTS]
+        if any(y is None for y in ys):
+            for v in fits.values():
+                v.append("—")
+            continue
+        a, b, r2, worst = fit_line(FIT_LIGHTS, ys)
+        fits["ms per light (slope)"].append(f"{b:.3f}")
+        fits["intercept ms"].append(f"{a:.2f}")
+        fits["R²"].append(f"{r2:.4f}")
+        fits["worst residual"].append(f"{100 * worst:.1f}%")
+    for name, cells in fits.items():
+        out.append(f"| fit 1–8: {name} | " + " | ".join(cells) + " |")
+    out.append("")
+
+
+def culling_table(runs, out):
+    out.append("| mesh | shader | threads | draw all ms | cull ms | speedup | triangles culled | detected |")
+    out.append("|---|---|---:|---:|---:|---:|---:|---|")
+    for mesh in runs.meshes():
+        for shader in ("gouraud", "phong"):
+            for t in runs.threads():
+                off = runs.ms(mesh=mesh, shader=shader, threads=t)
+                on_run = runs.get(mesh=mesh, shader=shader, threads=t, cull="on")
+                if off is None or not on_run or "ms" not in on_run:
+                    continue
+                on = on_run["ms"]
+                detected = "yes" if "back faces culled" in on_run.get("label", "") else "no (not closed)"
+                out.append(f"| {mesh} | {shader} | {t} | {fmt(off)} | {fmt(on)} | {off / on:.2f} "
+                           f"| {int(on_run.get('culled', 0)):,} | {detected} |")
+    out.append("")
+
+
+def context_lines(context, runs):
+    cvs = sorted(e["cv"] for e in runs.runs.values() if "cv" in e)
+    reps = {e.get("repetitions") for e in runs.runs.values() if e.get("repetitions")}
+    lines = [
+        f"- run: {context.get('date', '?')} on `{context.get('host_name', '?')}`, "
+        f"{context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz; "
+        f"load average at start {', '.join(f'{x:.2f}' for x in context.get('load_avg', []))}",
+        f"- medians of {', '.join(str(r) for r in sorted(reps)) or '?'} repetitions each; "
+        f"wall-clock time per render, 512 x 512 pixels, RenderOptions::exact()",
+    ]
+    if cvs:
+        lines.append(f"- spread between repetitions (coefficient of variation): median {100 * cvs[len(cvs) // 2]:.1f}%, "
+                     f"worst {100 * cvs[-1]:.1f}%")
+    return lines
+
+
+def main(argv):
+    if len(argv) != 2:
+        sys.stderr.write(__doc__)
+        return 2
+    context, raw = load(argv[1])
+    runs = Runs(raw)
+    out = context_lines(context, runs) + [""]
+    out.append("### Each effect set, specialised against general kernel\n")
+    for mesh in runs.meshes():
+        effect_table(runs, mesh, out)
+    out.append("### Target: ambient-only Phong within 10% of ambient-only Gouraud (specialised kernels)\n")
+    ambient_target_table(runs, out)
+    out.append("### Target: cost linear in the number of lights\n")
+    for mesh in runs.meshes():
+        lights_table(runs, mesh, out)
+    out.append("### Back-face culling (full lighting, 2 lights, specialised kernel)\n")
+    culling_table(runs, out)
+    print("\n".join(out))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
