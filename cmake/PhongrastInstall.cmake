@@ -1,0 +1,101 @@
+# Install rules and the CMake package (find_package(phongrast CONFIG)).
+# Included at the end of the top-level CMakeLists.txt when PHONGRAST_INSTALL is ON,
+# so every target below already exists; the optional ones (I/O library, command-line
+# program) are installed only when this build made them.
+#
+#   <prefix>/include/phongrast/            public headers (+ the generated version.hpp)
+#   <prefix>/lib/libphongrast.a            and libphongrast_io.a when built
+#   <prefix>/bin/phongrast                 the command-line program when built
+#   <prefix>/share/phongrast/              the example assets/ when present
+#   <prefix>/lib/cmake/phongrast/          phongrastConfig.cmake, its version file, the targets
+include(CMakePackageConfigHelpers)
+
+# tests/consumers/CMakeLists.txt expects the package files here too.
+set(PHONGRAST_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/phongrast")
+
+# Users write phongrast::phongrast and phongrast::io, whatever the build target names are.
+set_target_properties(phongrast PROPERTIES EXPORT_NAME phongrast)
+set(phongrast_exported_targets phongrast)
+if(TARGET phongrast_io)
+  set_target_properties(phongrast_io PROPERTIES EXPORT_NAME io)
+  list(APPEND phongrast_exported_targets phongrast_io)
+endif()
+
+# Include directories come from each target's $<INSTALL_INTERFACE:include> (src/CMakeLists.txt).
+install(TARGETS ${phongrast_exported_targets}
+  EXPORT phongrastTargets
+  ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT phongrast_development
+  LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT phongrast_runtime
+  RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT phongrast_runtime
+)
+
+# Public headers. The I/O headers go only with the I/O library: installing them
+# without it would give users headers whose functions link nowhere.
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/phongrast"
+  DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
+  COMPONENT phongrast_development
+  FILES_MATCHING PATTERN "*.hpp"
+  PATTERN "io" EXCLUDE
+)
+if(TARGET phongrast_io AND IS_DIRECTORY "${PROJECT_SOURCE_DIR}/include/phongrast/io")
+  install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/phongrast/io"
+    DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/phongrast"
+    COMPONENT phongrast_development
+    FILES_MATCHING PATTERN "*.hpp"
+  )
+endif()
+install(FILES "${PROJECT_BINARY_DIR}/include/phongrast/version.hpp"
+  DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/phongrast"
+  COMPONENT phongrast_development
+)
+
+# The command-line program is a tool, not something to link: installed, not exported.
+if(TARGET phongrast_cli)
+  install(TARGETS phongrast_cli
+    RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT phongrast_runtime)
+endif()
+
+if(IS_DIRECTORY "${PROJECT_SOURCE_DIR}/assets")
+  install(DIRECTORY "${PROJECT_SOURCE_DIR}/assets/"
+    DESTINATION "${CMAKE_INSTALL_DATADIR}/phongrast"
+    COMPONENT phongrast_runtime)
+endif()
+
+install(EXPORT phongrastTargets
+  NAMESPACE phongrast::
+  FILE phongrastTargets.cmake
+  DESTINATION "${PHONGRAST_INSTALL_CMAKEDIR}"
+  COMPONENT phongrast_development
+)
+
+# Read by phongrastConfig.cmake.in: whether the installed package has the io component.
+if(TARGET phongrast_io)
+  set(PHONGRAST_PACKAGE_HAS_IO ON)
+else()
+  set(PHONGRAST_PACKAGE_HAS_IO OFF)
+endif()
+configure_package_config_file(
+  "${PROJECT_SOURCE_DIR}/cmake/phongrastConfig.cmake.in"
+  "${PROJECT_BINARY_DIR}/package/phongrastConfig.cmake"
+  INSTALL_DESTINATION "${PHONGRAST_INSTALL_CMAKEDIR}"
+  NO_SET_AND_CHECK_MACRO
+)
+# SameMajorVersion: a request for X.Y is met by an installed X.Z with Z >= Y.
+write_basic_package_version_file(
+  "${PROJECT_BINARY_DIR}/package/phongrastConfigVersion.cmake"
+  VERSION "${PROJECT_VERSION}"
+  COMPATIBILITY SameMajorVersion
+)
+install(FILES
+  "${PROJECT_BINARY_DIR}/package/phongrastConfig.cmake"
+  "${PROJECT_BINARY_DIR}/package/phongrastConfigVersion.cmake"
+  DESTINATION "${PHONGRAST_INSTALL_CMAKEDIR}"
+  COMPONENT phongrast_development
+)
+if(TARGET phongrast_io)
+  # phongrastConfig.cmake includes it when a user asks for the io component.
+  install(FILES "${PROJECT_SOURCE_DIR}/cmake/PhongrastOpenImageIO.cmake"
+    DESTINATION "${PHONGRAST_INSTALL_CMAKEDIR}"
+    COMPONENT phongrast_development
+  )
+endif()
