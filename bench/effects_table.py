@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Turns bench_effects' JSON output into the Markdown tables of docs/performance.md.
 
-Usage: effects_table.py RESULTS.json [> tables.md]
+Usage: effects_table.py RESULTS.json [NOTE ...] [> tables.md]
+(each NOTE becomes a line of the run's description, e.g. the load average)
 
 Reads the median (and cv) aggregates of a run made with
 --benchmark_repetitions=N --benchmark_report_aggregates_only=true, and prints:
@@ -43,6 +44,7 @@ def load(path):
         entry = runs.setdefault(key, {"fields": fields})
         if b["aggregate_name"] == "median":
             entry["ms"] = to_ms(b["real_time"], b["time_unit"])
+            entry["cpu_ms"] = to_ms(b["cpu_time"], b["time_unit"])
             entry["label"] = b.get("label", "")
             for counter in ("samples", "drawn", "culled", "diffuse_evals", "specular_evals", "normal_interps"):
                 if counter in b:
@@ -219,8 +221,16 @@ def context_lines(context, runs):
         f"{context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz; "
         f"load average at start {', '.join(f'{x:.2f}' for x in context.get('load_avg', []))}",
         f"- medians of {', '.join(str(r) for r in sorted(reps)) or '?'} repetitions each; "
-        f"wall-clock time per render, 512 x 512 pixels, RenderOptions::exact()",
+        f"wall-clock time per render, 512 x 512 pixels (the default scene: its own size), RenderOptions::exact()",
     ]
+    # With one render thread all the work runs on the timed thread, so wall
+    # time well above its CPU time means the process waited for a core: the
+    # machine was busy with something else.
+    waits = sorted(e["ms"] / e["cpu_ms"] for e in runs.runs.values()
+                   if e["fields"].get("threads") == "1" and e.get("cpu_ms"))
+    if waits:
+        lines.append(f"- load check: 1-thread runs took {waits[len(waits) // 2]:.2f}x their CPU time in wall time "
+                     f"(median; worst {waits[-1]:.2f}x); 1.00 means the machine was otherwise idle")
     if cvs:
         lines.append(f"- spread between repetitions (coefficient of variation): median {100 * cvs[len(cvs) // 2]:.1f}%, "
                      f"worst {100 * cvs[-1]:.1f}%")
@@ -228,12 +238,12 @@ def context_lines(context, runs):
 
 
 def main(argv):
-    if len(argv) != 2:
+    if len(argv) < 2:
         sys.stderr.write(__doc__)
         return 2
     context, raw = load(argv[1])
     runs = Runs(raw)
-    out = context_lines(context, runs) + [""]
+    out = context_lines(context, runs) + [f"- {note}" for note in argv[2:]] + [""]
     out.append("### Each effect set, specialised against general kernel\n")
     for mesh in runs.meshes():
         effect_table(runs, mesh, out)

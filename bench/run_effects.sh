@@ -1,0 +1,38 @@
+#!/bin/sh
+# Issue 6 benchmark, start to finish: builds bench_effects (Release,
+# -DPHONGRAST_BUILD_BENCH=ON, warnings as errors) in its own build folder,
+# runs every case with repetitions, and writes the Markdown tables of
+# docs/performance.md from the JSON.
+#
+#   bench/run_effects.sh [extra Google Benchmark flags, e.g. --benchmark_filter=mesh=spot/]
+#
+# Environment: BUILD_DIR (default build/bench), REPETITIONS (5), MIN_TIME
+# (seconds per repetition, 0.2). Output: $BUILD_DIR/effects.json, effects.md.
+set -eu
+cd "$(dirname "$0")/.."
+build=${BUILD_DIR:-build/bench}
+repetitions=${REPETITIONS:-5}
+min_time=${MIN_TIME:-0.2}
+
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DPHONGRAST_WERROR=ON -DPHONGRAST_BUILD_BENCH=ON \
+  -DPHONGRAST_BUILD_TESTS=OFF -DPHONGRAST_BUILD_APPS=OFF -DPHONGRAST_BUILD_IO=ON -DPHONGRAST_INSTALL=OFF >/dev/null
+cmake --build "$build" -j2 --target bench_effects
+
+load_before=$(uptime)
+start=$(date -u +%Y-%m-%dT%H:%M:%SZ)
+"$build/bench/bench_effects" \
+  --benchmark_repetitions="$repetitions" --benchmark_report_aggregates_only=true \
+  --benchmark_min_time="$min_time" \
+  --benchmark_out="$build/effects.json" --benchmark_out_format=json "$@" 2>"$build/effects.stderr"
+load_after=$(uptime)
+
+notes=$(sed -n 's/^bench_effects: //p' "$build/effects.stderr")
+# One argument per note line.
+old_ifs=$IFS
+IFS='
+'
+# shellcheck disable=SC2086
+python3 bench/effects_table.py "$build/effects.json" "started $start" \
+  "\`uptime\` before: \`$load_before\`" "\`uptime\` after: \`$load_after\`" $notes >"$build/effects.md"
+IFS=$old_ifs
+echo "tables written to $build/effects.md"
