@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -80,25 +81,40 @@ Vec3<Real> ambient_term(const Vec3<Real>& color, const PhongMaterial& material,
     return Vec3<Real>(material.ka) * ambient_intensity * color;
 }
 
+/// N.L at or below this counts as 0: the light lies in the surface's plane to
+/// within rounding. Per-pixel points are interpolated, so they sit off the true
+/// surface by a few ulps of their distance to the eye; that tilts L by a few
+/// ulps times (distance to the eye / distance to the light), and without a
+/// margin the contract's "specular if N.L > 0" would switch a full highlight on
+/// at random pixels of a flat surface whose plane contains the light. 64
+/// machine epsilons (7.6e-6 in float, 1.4e-14 in double) cover that noise for
+/// lights farther than 1/20 of the eye's distance; what the margin removes is
+/// a diffuse term below kd * Ip * 7.6e-6, invisible at 8 bits.
+template <typename Real>
+constexpr Real grazing_threshold() {
+    return Real(64) * std::numeric_limits<Real>::epsilon();
+}
+
 /// Ip * kd * c * max(0, N.L) for one light, with L already a unit vector (or zero).
+/// N.L within grazing_threshold() of zero counts as zero.
 template <typename Real>
 Vec3<Real> diffuse_from_direction(const Vec3<Real>& normal, const Vec3<Real>& color,
                                   const Vec3<Real>& to_light, const PhongMaterial& material,
                                   const Vec3<Real>& intensity) {
     const Real n_dot_l = glm::dot(normal, to_light);
-    if (!(n_dot_l > Real(0))) return Vec3<Real>(Real(0));
+    if (!(n_dot_l > grazing_threshold<Real>())) return Vec3<Real>(Real(0));
     return intensity * Vec3<Real>(material.kd) * color * n_dot_l;
 }
 
-/// Ip * ks * max(0, R.V)^n if N.L > 0, with L and V already unit vectors (or zero).
-/// R.V is clamped to at most 1: for unit vectors it cannot exceed 1, and rounding
-/// that pushes it above would be amplified by a large n.
+/// Ip * ks * max(0, R.V)^n if N.L > 0 (beyond grazing_threshold()), with L and V
+/// already unit vectors (or zero). R.V is clamped to at most 1: for unit vectors
+/// it cannot exceed 1, and rounding that pushes it above would be amplified by a large n.
 template <typename Real>
 Vec3<Real> specular_from_direction(const Vec3<Real>& normal, const Vec3<Real>& to_light,
                                    const Vec3<Real>& to_eye, const PhongMaterial& material,
                                    const Vec3<Real>& intensity) {
     const Real n_dot_l = glm::dot(normal, to_light);
-    if (!(n_dot_l > Real(0))) return Vec3<Real>(Real(0));
+    if (!(n_dot_l > grazing_threshold<Real>())) return Vec3<Real>(Real(0));
     // A zero V (eye exactly at the point) contributes nothing, as the contract says.
     if (glm::dot(to_eye, to_eye) == Real(0)) return Vec3<Real>(Real(0));
     const Vec3<Real> reflected = Real(2) * normal * n_dot_l - to_light;
