@@ -23,11 +23,14 @@ namespace {
 using phongrast::Shader;
 using namespace phongrast_bench;
 
+/// Case::lights value meaning "keep the lights the scene file gives".
+constexpr int kSceneLights = -1;
+
 struct Case {
     const BenchMesh* mesh = nullptr;
     Shader shader = Shader::phong;
     EffectVariant effect;
-    int lights = 2;       ///< lights with non-zero intensity
+    int lights = 2;       ///< lights with non-zero intensity; kSceneLights: the scene's own
     int dark_lights = 0;  ///< extra lights of zero intensity (should cost nothing)
     bool specialized = true;
     bool cull = false;
@@ -35,7 +38,7 @@ struct Case {
 
     std::string name() const {
         return "effects/mesh=" + mesh->name + "/shader=" + phongrast::to_string(shader) + "/effect=" + effect.name +
-               "/lights=" + std::to_string(lights) + "/dark=" + std::to_string(dark_lights) +
+               "/lights=" + (lights == kSceneLights ? std::string("scene") : std::to_string(lights)) + "/dark=" + std::to_string(dark_lights) +
                "/kernel=" + (specialized ? "special" : "general") + "/cull=" + (cull ? "on" : "off") +
                "/threads=" + std::to_string(threads);
     }
@@ -48,7 +51,7 @@ std::set<std::string> g_registered;
 phongrast::Scene make_scene(const Case& c) {
     phongrast::Scene scene = with_effect(c.mesh->scene, c.effect);
     scene.shader = c.shader;
-    scene.lights = lights_around(scene, c.lights);
+    if (c.lights != kSceneLights) scene.lights = lights_around(scene, c.lights);
     const std::vector<phongrast::PointLight> extra = lights_around(scene, c.dark_lights);
     for (phongrast::PointLight dark : extra) {
         dark.intensity = glm::vec3(0.0f);
@@ -100,12 +103,15 @@ EffectVariant find_effect(const std::string& name) {
 
 void register_mesh(const BenchMesh& mesh) {
     const EffectVariant full = find_effect("full");
+    // The effect table and culling use the scene file's own lights when it has
+    // them (the default scene), else two generated ones.
+    const int table_lights = mesh.own_lights ? kSceneLights : 2;
     for (int threads : {1, 2}) {
         for (bool specialized : {true, false}) {
             // Each effect set, every shader, two lights.
             for (const EffectVariant& effect : effect_variants()) {
                 for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
-                    register_case({&mesh, shader, effect, 2, 0, specialized, false, threads});
+                    register_case({&mesh, shader, effect, table_lights, 0, specialized, false, threads});
                 }
             }
             for (Shader shader : {Shader::gouraud, Shader::phong}) {
@@ -118,7 +124,7 @@ void register_mesh(const BenchMesh& mesh) {
             }
         }
         for (Shader shader : {Shader::gouraud, Shader::phong}) {
-            register_case({&mesh, shader, full, 2, 0, true, true, threads});
+            register_case({&mesh, shader, full, table_lights, 0, true, true, threads});
         }
     }
 }

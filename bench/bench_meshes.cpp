@@ -30,7 +30,7 @@ void add_shared_mesh(Catalogue& c, const std::string& file, ViewAxis axis) {
     try {
         phongrast::io::ObjFile obj = phongrast::io::read_obj((folder / file).string());
         const std::string name = std::filesystem::path(file).stem().string();
-        c.meshes.push_back({name, framed_scene(std::move(obj.mesh), kImageSize, kImageSize, axis), false});
+        c.meshes.push_back({name, framed_scene(std::move(obj.mesh), kImageSize, kImageSize, axis), false, false});
     } catch (const std::exception& error) {
         c.notes.push_back("skipping " + file + ": " + error.what());
     }
@@ -47,7 +47,7 @@ void add_default_scene(Catalogue& c) {
     try {
         phongrast::io::SceneFile file = phongrast::io::read_scene_file(path.string());
         phongrast::io::ObjFile obj = phongrast::io::read_obj(file.mesh_path);
-        BenchMesh mesh{"default", std::move(file.scene), false};
+        BenchMesh mesh{"default", std::move(file.scene), false, true};
         mesh.scene.mesh = std::move(obj.mesh);
         mesh.scene.material = phongrast::io::resolve_material(file.material, obj.material, nullptr);
         c.meshes.push_back(std::move(mesh));
@@ -60,12 +60,12 @@ void add_default_scene(Catalogue& c) {
 Catalogue build_catalogue() {
     Catalogue c;
     // 1,280 triangles of ~90 pixels each: the time goes into filling and shading.
-    c.meshes.push_back({"icosphere-1k", framed_scene(icosphere(3), kImageSize, kImageSize), false});
+    c.meshes.push_back({"icosphere-1k", framed_scene(icosphere(3), kImageSize, kImageSize), false, false});
     // 81,920 triangles, like the shared meshes' 70k-86k: ~1.5 pixels each, so
     // per-triangle setup weighs as much as per-pixel shading.
-    c.meshes.push_back({"icosphere-82k", framed_scene(icosphere(6), kImageSize, kImageSize), false});
+    c.meshes.push_back({"icosphere-82k", framed_scene(icosphere(6), kImageSize, kImageSize), false, false});
     // Seen from above at an angle: some inner back faces are painted over front faces.
-    c.meshes.push_back({"torus", framed_scene(torus(256, 128, 1.0, 0.4), kImageSize, kImageSize), true});
+    c.meshes.push_back({"torus", framed_scene(torus(256, 128, 1.0, 0.4), kImageSize, kImageSize), true, false});
 #if PHONGRAST_BENCH_WITH_IO
     add_default_scene(c);
     add_shared_mesh(c, "spot.obj", ViewAxis::minus_z);   // closed; faces -z

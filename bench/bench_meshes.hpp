@@ -14,6 +14,7 @@ struct BenchMesh {
     std::string name;
     phongrast::Scene scene;     ///< framed, two lights, full lighting, Phong
     bool culling_only = false;  ///< only the culling comparison is run on it
+    bool own_lights = false;    ///< the effect table keeps the scene's lights (a scene file's)
 };
 
 /// Built once, on first call. Rendered at kImageSize x kImageSize unless the
