@@ -81,13 +81,14 @@ ImageAgreement compare_images(const phongrast::Image& first, const phongrast::Im
 }
 
 std::string summary(const ImageAgreement& a) {
-    char text[512];
+    char text[640];
     std::snprintf(text, sizeof text,
-                  "diff>1/255 %.3f%%  >2/255 %.3f%%  >8/255 %.3f%%  max %.4f at (row %d, col %d)  rmse %.5f  "
-                  "coverage: both %zu, only first %zu, only second %zu  interior: >8/255 %zu of %zu, max %.4f",
-                  100.0 * a.share(a.above_1), 100.0 * a.share(a.above_2), 100.0 * a.share(a.above_8),
-                  a.max_difference, a.max_row, a.max_column, a.rmse, a.covered_in_both, a.only_in_first,
-                  a.only_in_second, a.interior_above_8, a.interior_pixels, a.interior_max_difference);
+                  "of %zu pixels, differing by >1/255: %zu (%.4f%%), >2/255: %zu, >8/255: %zu; max %.4f at (row %d, "
+                  "col %d); rmse %.6f; coverage: both %zu, only first %zu, only second %zu; interior (3x3 covered in "
+                  "both): %zu pixels, >8/255: %zu, max %.4f",
+                  a.pixels, a.above_1, 100.0 * a.share(a.above_1), a.above_2, a.above_8, a.max_difference, a.max_row,
+                  a.max_column, a.rmse, a.covered_in_both, a.only_in_first, a.only_in_second, a.interior_pixels,
+                  a.interior_above_8, a.interior_max_difference);
     return text;
 }
 

@@ -42,7 +42,7 @@ struct ImageAgreement {
 ImageAgreement compare_images(const phongrast::Image& first, const phongrast::Image& second,
                               const glm::vec3& background);
 
-/// One line: "diff>1/255 0.12%  >8/255 0.01%  max 0.0312 at (r, c)  rmse 0.0011  coverage +3/-2".
+/// One line with the counts, shares, largest difference, RMSE and coverage.
 std::string summary(const ImageAgreement& agreement);
 
 /// Per-pixel largest channel difference after clamping.
