@@ -1,0 +1,109 @@
+// PNG/EXR writing (format from the extension, clamping, no gamma, atomic
+// replacement), the labelled sheet, and automatic framing.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "io_test_files.hpp"
+#include "phongrast/camera.hpp"
+#include "phongrast/io/auto_scene.hpp"
+#include "phongrast/io/error.hpp"
+#include "phongrast/io/image_file.hpp"
+#include "phongrast/io/sheet.hpp"
+
+using namespace phongrast;
+using Catch::Matchers::Contains;
+
+namespace {
+
+Image test_pattern() {
+    Image image(2, 3);
+    image.at(0, 0) = {0.0f, 0.5f, 1.0f};
+    image.at(0, 1) = {-1.0f, 2.0f, 0.25f};  // out of [0,1]: clamped in PNG, kept in EXR
+    image.at(0, 2) = {0.2f, 0.4f, 0.6f};
+    image.at(1, 0) = {1.0f, 0.0f, 0.0f};
+    image.at(1, 1) = {0.0f, 1.0f, 0.0f};
+    image.at(1, 2) = {0.0f, 0.0f, 1.0f};
+    return image;
+}
+
+std::string contents(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("PNG is 8-bit, clamped to [0,1], without a gamma curve") {
+    TemporaryFolder folder;
+    const std::string path = folder.file("pattern.png");
+    io::write_image(test_pattern(), path);
+    const Image back = io::read_image(path);
+    REQUIRE(back.rows == 2);
+    REQUIRE(back.columns == 3);
+    // 0.5 -> 128/255 (a gamma curve would give 186); 0.25 -> 64/255.
+    CHECK(back.at(0, 0).y == Approx(128.0f / 255.0f));
+    CHECK(back.at(0, 1).x == 0.0f);
+    CHECK(back.at(0, 1).y == 1.0f);
+    CHECK(back.at(0, 1).z == Approx(64.0f / 255.0f));
+    CHECK(back.at(0, 2).x == Approx(51.0f / 255.0f));
+    CHECK(back.at(1, 2) == glm::vec3(0, 0, 1));
+    CHECK(folder.entry_count() == 1);
+}
+
+TEST_CASE("EXR keeps linear unclamped floats") {
+    TemporaryFolder folder;
+    const std::string path = folder.file("pattern.EXR");
+    io::write_image(test_pattern(), path);
+    const Image back = io::read_image(path);
+    CHECK(back.pixels == test_pattern().pixels);
+}
+
+TEST_CASE("an unknown extension is an error, and a failed write leaves the old file") {
+    TemporaryFolder folder;
+    CHECK_THROWS_WITH(io::image_format_for("out.jpg"), Contains("out.jpg") && Contains(".png") && Contains(".exr"));
+    CHECK_THROWS_AS(io::image_format_for("noextension"), io::FileError);
+    const std::string path = folder.write("keep.png", "old contents");
+    Image empty;
+    CHECK_THROWS_AS(io::write_image(empty, path), io::FileError);
+    CHECK(contents(path) == "old contents");
+    CHECK_THROWS_WITH(io::write_image(test_pattern(), folder.file("no-such-folder/x.png")),
+                      Contains("x.png") && Contains("cannot write"));
+    CHECK(folder.entry_count() == 1);
+}
+
+TEST_CASE("the sheet lays cells out in a grid and draws dark label text") {
+    std::vector<io::SheetCell> cells;
+    for (int i = 0; i < 8; ++i) cells.push_back({Image(40, 60, glm::vec3(0.0f, 0.0f, 1.0f)), "Phong, full"});
+    const Image sheet = io::compose_sheet(cells, 4);
+    CHECK(sheet.columns > 4 * 60);
+    CHECK(sheet.rows > 2 * 40);
+    std::size_t blue = 0;
+    std::size_t dark_text = 0;
+    for (const glm::vec3& p : sheet.pixels) {
+        if (p == glm::vec3(0, 0, 1)) ++blue;
+        if (p.x < 0.5f && p.x == p.y && p.y == p.z) ++dark_text;
+    }
+    CHECK(blue == 8u * 40u * 60u);  // every cell pixel, untouched
+    CHECK(dark_text > 50);          // the labels were drawn (the font was found)
+}
+
+TEST_CASE("automatic framing: every vertex inside the image with a margin") {
+    Mesh mesh;
+    mesh.positions = {{10, 20, 30}, {14, 21, 30}, {10, 26, 33}, {12, 20, 31}};
+    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    const Scene scene = io::frame_mesh(mesh, 300, 400);
+    CHECK(scene.camera.lookat == glm::dvec3(12, 23, 31.5));
+    CHECK(scene.lights.size() == 3);
+    const CameraFrame frame = make_camera_frame(scene.camera, 300, 400);
+    double nearest_edge = 1e9;
+    for (const glm::dvec3& p : mesh.positions) {
+        const ProjectedPoint q = frame.project(p);
+        nearest_edge = std::min({nearest_edge, q.column, 400 - q.column, q.row, 300 - q.row});
+    }
+    CHECK(nearest_edge > 0.03 * 300);   // a margin on every side
+    CHECK(nearest_edge < 0.06 * 400);   // and tight: the mesh fills the frame on one axis
+}

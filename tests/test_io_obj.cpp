@@ -1,0 +1,105 @@
+// phongrast::io::read_obj / write_obj: the contract's OBJ reading and every bad-input error.
+#include <catch2/catch.hpp>
+
+#include <glm/geometric.hpp>
+
+#include "io_test_files.hpp"
+#include "phongrast/io/error.hpp"
+#include "phongrast/io/obj_file.hpp"
+
+using phongrast::io::FileError;
+using phongrast::io::read_obj;
+using Catch::Matchers::Contains;
+
+TEST_CASE("vertex colours, a fan-triangulated quad and negative indices") {
+    TemporaryFolder folder;
+    const std::string path = folder.write("quad.obj",
+                                          "# a coloured quad, then a triangle with relative indices\n"
+                                          "v 0 0 0 1 0 0\n"
+                                          "v 1 0 0 0 1 0\n"
+                                          "v 1 1 0 0 0 1\n"
+                                          "v 0 1 0 0.5 0.5 0.5\n"
+                                          "f 1 2 3 4\n"
+                                          "f -4/1/1 -3//2 -1\n");
+    const phongrast::io::ObjFile obj = read_obj(path);
+    REQUIRE(obj.mesh.positions.size() == 4);
+    REQUIRE(obj.mesh.colors.size() == 4);
+    CHECK(obj.mesh.colors[1] == glm::vec3(0, 1, 0));
+    CHECK(obj.mesh.colors[3] == glm::vec3(0.5f));
+    REQUIRE(obj.mesh.triangles.size() == 3);
+    // The contract's fan: v0 v1 v2, v0 v2 v3.
+    CHECK(obj.mesh.triangles[0] == phongrast::Triangle{0, 1, 2});
+    CHECK(obj.mesh.triangles[1] == phongrast::Triangle{0, 2, 3});
+    CHECK(obj.mesh.triangles[2] == phongrast::Triangle{0, 1, 3});
+    CHECK_FALSE(obj.material);
+}
+
+TEST_CASE("vertices without a colour are white") {
+    TemporaryFolder folder;
+    const phongrast::io::ObjFile obj =
+        read_obj(folder.write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    REQUIRE(obj.mesh.colors.size() == 3);
+    for (const glm::vec3& c : obj.mesh.colors) CHECK(c == glm::vec3(1.0f));
+}
+
+TEST_CASE("coordinates keep double precision (1e7 + 0.25)") {
+    // tinyobjloader's packaged float build would read 10000000.25 as 10000000.
+    TemporaryFolder folder;
+    const phongrast::io::ObjFile obj = read_obj(
+        folder.write("far.obj", "v 10000000.25 -10000000.125 3\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    CHECK(obj.mesh.positions[0].x == 10000000.25);
+    CHECK(obj.mesh.positions[0].y == -10000000.125);
+}
+
+TEST_CASE("MTL Ka/Kd/Ks/Ns become the PhongMaterial") {
+    TemporaryFolder folder;
+    folder.write("shiny.mtl", "newmtl shiny\nKa 0.1 0.2 0.3\nKd 0.4 0.5 0.6\nKs 0.7 0.8 0.9\nNs 42\n");
+    const phongrast::io::ObjFile obj = read_obj(
+        folder.write("lit.obj", "mtllib shiny.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl shiny\nf 1 2 3\n"));
+    REQUIRE(obj.material);
+    CHECK(obj.material_name == "shiny");
+    CHECK(obj.material->ka == glm::vec3(0.1f, 0.2f, 0.3f));
+    CHECK(obj.material->kd == glm::vec3(0.4f, 0.5f, 0.6f));
+    CHECK(obj.material->ks == glm::vec3(0.7f, 0.8f, 0.9f));
+    CHECK(obj.material->n == 42.0f);
+}
+
+TEST_CASE("bad OBJ input: the message names the file, the line and what was expected") {
+    TemporaryFolder folder;
+    struct Case {
+        const char* name;
+        const char* text;
+        const char* expected;
+    };
+    const Case cases[] = {
+        {"zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "zero.obj:4: face vertex index 0"},
+        {"range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "range.obj:4: face vertex index 4 is out of range"},
+        {"negative.obj", "v 0 0 0\nf -1 -2 -3\nv 1 0 0\nv 0 1 0\n", "negative.obj:2: face vertex index -2 is out of range"},
+        {"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "nan.obj:2: vertex x: expected a finite number"},
+        {"inf.obj", "v 0 0 0\nv 1 0 0\nv 0 1e999 0\nf 1 2 3\n", "inf.obj:3: vertex y: expected a finite number"},
+        {"word.obj", "v 0 0 zero\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "word.obj:1: vertex z: expected a number"},
+        {"two.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", "two.obj:4: face with 2 vertices; expected at least 3"},
+        {"empty.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "empty.obj: no faces"},
+    };
+    for (const Case& c : cases) {
+        INFO(c.name);
+        const std::string path = folder.write(c.name, c.text);
+        CHECK_THROWS_WITH(read_obj(path), Contains(c.expected));
+    }
+    CHECK_THROWS_WITH(read_obj(folder.file("missing.obj")), Contains("missing.obj: mesh not found"));
+}
+
+TEST_CASE("write_obj then read_obj gives the same mesh") {
+    TemporaryFolder folder;
+    phongrast::Mesh mesh;
+    mesh.positions = {{0.1, 0.2, 0.3}, {10000000.25, 1, 0}, {0, 1, 1e-9}};
+    mesh.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 0.25f}};
+    mesh.triangles = {{0, 1, 2}};
+    const std::string path = folder.file("round.obj");
+    phongrast::io::write_obj(mesh, path, "round trip");
+    const phongrast::io::ObjFile obj = read_obj(path);
+    CHECK(obj.mesh.positions == mesh.positions);
+    CHECK(obj.mesh.colors == mesh.colors);
+    CHECK(obj.mesh.triangles == mesh.triangles);
+    CHECK(folder.entry_count() == 1);  // no temporary file left
+}
