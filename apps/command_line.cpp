@@ -1,0 +1,48 @@
+#include "command_line.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace phongrast::cli {
+
+void add_scene_flags(CLI::App& command, SceneFlags& flags, const std::string& output_help) {
+    command.add_option("input", flags.input,
+                       "Scene file (.json, ../shared/scene-format.md) or a mesh (.obj) to frame automatically. "
+                       "Default: the project's default scene (assets/default.json)");
+    command.add_option("-o,--output", flags.output, output_help);
+    command.add_option("--mesh", flags.mesh, "OBJ mesh to render instead of the scene's \"mesh\"");
+    command.add_option("--shader", flags.shader, "flat, gouraud or phong (overrides the scene)");
+    command.add_option("--lighting", flags.lighting,
+                       "ambient, diffuse, specular, full, or several joined with '+' (overrides the scene)");
+    command.add_option("--mode", flags.mode,
+                       "exact: the contract's rendering; seed: the original method's three simplifications")
+        ->check(CLI::IsMember({"exact", "seed"}))
+        ->capture_default_str();
+    command.add_option("--size", flags.size, "Image size WxH in pixels, e.g. 640x480 (overrides the scene)");
+    command.add_option("--eye", flags.eye, "Camera position x,y,z")->expected(3)->delimiter(',');
+    command.add_option("--lookat", flags.lookat, "Point the camera looks at x,y,z")->expected(3)->delimiter(',');
+    command.add_option("--up", flags.up, "Camera up direction x,y,z")->expected(3)->delimiter(',');
+    command.add_option("--focal", flags.focal, "Focal distance (world units)")->check(CLI::PositiveNumber);
+    command.add_option("--sensor", flags.sensor, "Image plane size H,W (world units)")->expected(2)->delimiter(',');
+    command.add_option("--threads", flags.threads, "Worker threads; 0 = all cores (the picture does not change)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    command.add_option("--samples", flags.samples, "Samples per pixel axis (1 = pixel centres; 4 = 16 samples)")
+        ->check(CLI::Range(1, 16))
+        ->capture_default_str();
+    command.add_flag("-q,--quiet", flags.quiet, "Print nothing but errors");
+}
+
+std::pair<int, int> parse_size(const std::string& text) {
+    int width = 0;
+    int height = 0;
+    char rest = 0;
+    if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &rest) != 2 || width < 1 || height < 1 ||
+        width > 32768 || height > 32768) {
+        throw std::invalid_argument("--size: expected WxH with whole numbers from 1 to 32768, e.g. 640x480; got '" +
+                                    text + "'");
+    }
+    return {width, height};
+}
+
+}  // namespace phongrast::cli

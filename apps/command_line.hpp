@@ -1,0 +1,36 @@
+// The flags `render` and `sheet` share, and how they change a scene.
+#ifndef PHONGRAST_APPS_COMMAND_LINE_HPP
+#define PHONGRAST_APPS_COMMAND_LINE_HPP
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace phongrast::cli {
+
+struct SceneFlags {
+    std::string input;   ///< scene .json or mesh .obj; empty: the default scene
+    std::string output;  ///< image path; empty: a name in the current folder
+    std::string mesh;
+    std::string shader;
+    std::string lighting;
+    std::string mode = "exact";
+    std::string size;  ///< "WxH"
+    std::vector<double> eye, lookat, up, sensor;
+    double focal = 0.0;
+    int threads = 0;
+    int samples = 1;
+    bool quiet = false;
+};
+
+/// Adds the positional input, -o and every scene/override flag to `command`.
+void add_scene_flags(CLI::App& command, SceneFlags& flags, const std::string& output_help);
+
+/// "640x480" -> {640, 480} (width, height). Throws std::invalid_argument naming --size.
+std::pair<int, int> parse_size(const std::string& text);
+
+}  // namespace phongrast::cli
+
+#endif  // PHONGRAST_APPS_COMMAND_LINE_HPP

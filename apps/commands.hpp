@@ -1,0 +1,40 @@
+// The three subcommands. Each `add_*` registers its flags on the CLI11 app and
+// returns the state its `run_*` reads after parsing.
+#ifndef PHONGRAST_APPS_COMMANDS_HPP
+#define PHONGRAST_APPS_COMMANDS_HPP
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "command_line.hpp"
+
+namespace phongrast::cli {
+
+struct RenderCommand {
+    SceneFlags scene;
+    int repeat = 0;  ///< 0: one render, no warm-up
+    std::string stats_json;
+};
+void add_render_command(CLI::App& app, RenderCommand& command);
+int run_render(const RenderCommand& command);
+
+struct SheetCommand {
+    SceneFlags scene;
+    std::string figures_folder;
+};
+void add_sheet_command(CLI::App& app, SheetCommand& command);
+int run_sheet(const SheetCommand& command);
+
+struct GenerateCommand {
+    std::string output = "default.obj";
+    int segments = 240;
+    int sides = 20;
+    bool quiet = false;
+};
+void add_generate_command(CLI::App& app, GenerateCommand& command);
+int run_generate(const GenerateCommand& command);
+
+}  // namespace phongrast::cli
+
+#endif  // PHONGRAST_APPS_COMMANDS_HPP

@@ -1,0 +1,53 @@
+// phongrast: render scene files and meshes from the command line.
+// Exit status: 0 on success, 2 for bad input or a bad command line (the
+// message names the file, line or field and what was expected), 1 for
+// anything unexpected.
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "phongrast/io/error.hpp"
+#include "phongrast/version.hpp"
+
+int main(int argc, char** argv) {
+    using namespace phongrast::cli;
+    CLI::App app("phongrast " PHONGRAST_VERSION_STRING
+                 ": a software renderer with Phong lighting and painter's order. "
+                 "Scene files follow ../shared/scene-format.md.",
+                 "phongrast");
+    app.set_version_flag("--version", "phongrast " PHONGRAST_VERSION_STRING);
+    app.require_subcommand(1);
+    RenderCommand render;
+    SheetCommand sheet;
+    GenerateCommand generate;
+    add_render_command(app, render);
+    add_sheet_command(app, sheet);
+    add_generate_command(app, generate);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& success) {
+        return app.exit(success);  // --help, --version
+    } catch (const CLI::ParseError& error) {
+        app.exit(error);
+        return 2;
+    }
+
+    try {
+        if (app.got_subcommand("render")) return run_render(render);
+        if (app.got_subcommand("sheet")) return run_sheet(sheet);
+        if (app.got_subcommand("generate")) return run_generate(generate);
+    } catch (const phongrast::io::FileError& error) {
+        std::cerr << "phongrast: error: " << error.what() << '\n';
+        return 2;
+    } catch (const std::invalid_argument& error) {
+        std::cerr << "phongrast: error: " << error.what() << '\n';
+        return 2;
+    } catch (const std::exception& error) {
+        std::cerr << "phongrast: internal error: " << error.what() << '\n';
+        return 1;
+    }
+    return 2;
+}

@@ -1,0 +1,75 @@
+// phongrast render: one scene to one PNG/EXR, optionally timed over --repeat runs.
+#include <chrono>
+#include <filesystem>
+#include <cstdio>
+
+#include "commands.hpp"
+#include "phongrast/io/image_file.hpp"
+#include "phongrast/io/text_file.hpp"
+#include "report.hpp"
+#include "scene_setup.hpp"
+
+namespace phongrast::cli {
+namespace {
+
+std::string milliseconds(double seconds) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3f ms", seconds * 1e3);
+    return buffer;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, RenderCommand& command) {
+    CLI::App* render = app.add_subcommand(
+        "render",
+        "Render a scene file or a mesh to PNG (8-bit, clamped, no gamma) or EXR (linear float). "
+        "With no input, renders the default scene to ./default.png.");
+    add_scene_flags(*render, command.scene,
+                    "Output image, .png or .exr. Default: NAME.png in the current folder, NAME being the input's");
+    render->add_option("--repeat", command.repeat,
+                       "Render K times after one warm-up and print the median, minimum and maximum render time "
+                       "(loading and writing excluded)")
+        ->check(CLI::Range(1, 100000));
+    render->add_option("--stats-json", command.stats_json,
+                       "Write the render times and statistics to this JSON file");
+}
+
+int run_render(const RenderCommand& command) {
+    const Messages messages(command.scene.quiet);
+    PreparedScene prepared = prepare_scene(command.scene, messages);
+    const std::string output = choose_output(command.scene.output, prepared.name + ".png");
+
+    using Clock = std::chrono::steady_clock;
+    Timing timing;
+    const int runs = command.repeat > 0 ? command.repeat : 1;
+    timing.warm_up = command.repeat > 0;
+    if (timing.warm_up) {
+        messages.progress(0, runs, "warm-up");
+        render(prepared.scene, prepared.options);
+    }
+    RenderResult result;
+    for (int run = 0; run < runs; ++run) {
+        if (runs > 1) messages.progress(run + 1, runs, "rendering");
+        const Clock::time_point start = Clock::now();
+        result = render(prepared.scene, prepared.options);
+        timing.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    messages.progress_done();
+
+    io::write_image(result.image, output);
+    messages.result(summary_line(result.stats, timing.seconds.back()));
+    if (command.repeat > 0) {
+        messages.result("render time over " + std::to_string(runs) + " runs after 1 warm-up: median " +
+                        milliseconds(timing.median()) + ", min " + milliseconds(timing.min()) + ", max " +
+                        milliseconds(timing.max()));
+    }
+    if (!command.stats_json.empty()) {
+        io::write_text_file(command.stats_json,
+                            stats_json(timing, result.stats, prepared.scene, prepared.options, command.scene.mode));
+    }
+    messages.result("wrote " + std::filesystem::absolute(output).lexically_normal().string());
+    return 0;
+}
+
+}  // namespace phongrast::cli

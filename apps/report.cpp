@@ -1,0 +1,97 @@
+#include "report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+namespace phongrast::cli {
+
+Messages::Messages(bool quiet) : quiet_(quiet), terminal_(isatty(STDERR_FILENO) != 0) {}
+
+void Messages::note(const std::string& text) const {
+    if (!quiet_) std::cerr << "phongrast: " << text << '\n';
+}
+
+void Messages::warning(const std::string& text) const {
+    if (!quiet_) std::cerr << "phongrast: warning: " << text << '\n';
+}
+
+void Messages::result(const std::string& text) const {
+    if (!quiet_) std::cout << text << std::endl;
+}
+
+void Messages::progress(int step, int steps, const std::string& what) const {
+    if (quiet_ || !terminal_) return;
+    std::cerr << "\r\033[K[" << step << '/' << steps << "] " << what << std::flush;
+}
+
+void Messages::progress_done() const {
+    if (quiet_ || !terminal_) return;
+    std::cerr << "\r\033[K" << std::flush;
+}
+
+std::string summary_line(const RenderStats& stats, double seconds) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer,
+                  "%llu triangles in, %llu drawn, %llu dropped, %llu clipped, %llu culled, %llu outside the view, "
+                  "%llu degenerate; render %.2f ms",
+                  static_cast<unsigned long long>(stats.triangles_in),
+                  static_cast<unsigned long long>(stats.triangles_drawn),
+                  static_cast<unsigned long long>(stats.triangles_dropped),
+                  static_cast<unsigned long long>(stats.triangles_clipped),
+                  static_cast<unsigned long long>(stats.triangles_culled),
+                  static_cast<unsigned long long>(stats.triangles_outside),
+                  static_cast<unsigned long long>(stats.triangles_degenerate), seconds * 1e3);
+    return buffer;
+}
+
+double Timing::median() const {
+    if (seconds.empty()) return 0.0;
+    std::vector<double> sorted = seconds;
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t middle = sorted.size() / 2;
+    return sorted.size() % 2 == 1 ? sorted[middle] : 0.5 * (sorted[middle - 1] + sorted[middle]);
+}
+
+double Timing::min() const { return seconds.empty() ? 0.0 : *std::min_element(seconds.begin(), seconds.end()); }
+double Timing::max() const { return seconds.empty() ? 0.0 : *std::max_element(seconds.begin(), seconds.end()); }
+
+std::string stats_json(const Timing& timing, const RenderStats& stats, const Scene& scene,
+                       const RenderOptions& options, const std::string& mode) {
+    nlohmann::ordered_json document;
+    document["render_seconds"] = {
+        {"median", timing.median()}, {"min", timing.min()}, {"max", timing.max()},
+        {"runs", timing.seconds},    {"warm_up", timing.warm_up}};
+    document["scene"] = {{"triangles", scene.mesh.triangles.size()},
+                         {"vertices", scene.mesh.positions.size()},
+                         {"height", scene.image.rows},
+                         {"width", scene.image.columns},
+                         {"shader", to_string(scene.shader)},
+                         {"lighting", to_string(scene.lighting)},
+                         {"lights", scene.lights.size()},
+                         {"mode", mode},
+                         {"threads", options.threads},
+                         {"samples_per_axis", options.samples_per_axis}};
+    document["stats"] = {{"triangles_in", stats.triangles_in},
+                         {"triangles_culled", stats.triangles_culled},
+                         {"triangles_degenerate", stats.triangles_degenerate},
+                         {"triangles_dropped", stats.triangles_dropped},
+                         {"triangles_clipped", stats.triangles_clipped},
+                         {"triangles_outside", stats.triangles_outside},
+                         {"triangles_drawn", stats.triangles_drawn},
+                         {"samples_shaded", stats.samples_shaded},
+                         {"nonfinite_values_replaced", stats.nonfinite_values_replaced},
+                         {"ambient_evaluations", stats.ambient_evaluations},
+                         {"diffuse_evaluations", stats.diffuse_evaluations},
+                         {"specular_evaluations", stats.specular_evaluations},
+                         {"normal_interpolations", stats.normal_interpolations},
+                         {"effects", to_string(stats.effects)},
+                         {"back_faces_culled", stats.back_faces_culled},
+                         {"seconds", stats.seconds}};
+    return document.dump(2) + "\n";
+}
+
+}  // namespace phongrast::cli

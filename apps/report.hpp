@@ -1,0 +1,47 @@
+// What the program says: notes and warnings on stderr (silenced by --quiet),
+// progress on stderr only when it is a terminal, the one-line render summary,
+// and the --stats-json file.
+#ifndef PHONGRAST_APPS_REPORT_HPP
+#define PHONGRAST_APPS_REPORT_HPP
+
+#include <string>
+#include <vector>
+
+#include "phongrast/render.hpp"
+
+namespace phongrast::cli {
+
+class Messages {
+public:
+    explicit Messages(bool quiet);
+    bool quiet() const { return quiet_; }
+    void note(const std::string& text) const;     ///< stderr, "phongrast: ..."
+    void warning(const std::string& text) const;  ///< stderr, "phongrast: warning: ..."
+    void result(const std::string& text) const;   ///< stdout (where the image went, summaries)
+    /// "\r[step/steps] what" on stderr when it is a terminal; done() ends the line.
+    void progress(int step, int steps, const std::string& what) const;
+    void progress_done() const;
+
+private:
+    bool quiet_;
+    bool terminal_;
+};
+
+/// "12288 triangles in, 6020 drawn, 0 dropped, 12 clipped, 6268 culled, ... 41.3 ms".
+std::string summary_line(const RenderStats& stats, double seconds);
+
+struct Timing {
+    std::vector<double> seconds;  ///< one per timed run, in order
+    bool warm_up = false;
+    double median() const;
+    double min() const;
+    double max() const;
+};
+
+/// The --stats-json document: timing and the last run's RenderStats.
+std::string stats_json(const Timing& timing, const RenderStats& stats, const Scene& scene,
+                       const RenderOptions& options, const std::string& mode);
+
+}  // namespace phongrast::cli
+
+#endif  // PHONGRAST_APPS_REPORT_HPP

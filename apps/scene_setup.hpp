@@ -1,0 +1,35 @@
+// From command-line flags to a scene ready to render: the scene file or the
+// automatically framed mesh (or the default scene), then the overrides.
+#ifndef PHONGRAST_APPS_SCENE_SETUP_HPP
+#define PHONGRAST_APPS_SCENE_SETUP_HPP
+
+#include <string>
+
+#include "command_line.hpp"
+#include "phongrast/render.hpp"
+#include "report.hpp"
+
+namespace phongrast::cli {
+
+struct PreparedScene {
+    Scene scene;
+    RenderOptions options;
+    std::string name;  ///< stem for default output names ("default", "bunny")
+};
+
+/// Finds assets/default.json: ./assets, then the source tree, then the
+/// installed share folder. Throws phongrast::io::FileError listing where it looked.
+std::string find_default_scene();
+
+/// Loads, frames and overrides. Notes (defaults used, the chosen scene of an
+/// automatically framed mesh) go through `messages`. Throws io::FileError or
+/// std::invalid_argument for bad input.
+PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages);
+
+/// `output` if given, else NAME + suffix in the current folder. Checks the
+/// extension and that the folder exists, before anything is rendered.
+std::string choose_output(const std::string& output, const std::string& default_name);
+
+}  // namespace phongrast::cli
+
+#endif  // PHONGRAST_APPS_SCENE_SETUP_HPP
