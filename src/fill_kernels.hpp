@@ -119,11 +119,20 @@ Vec3<Real> surface_color(const DrawTriangle<Real>& d, const Real* w, const FillS
     return uniform ? setup.color : w[0] * d.v[0].color + w[1] * d.v[1].color + w[2] * d.v[2].color;
 }
 
-/// Flat and Gouraud: the colour was lit per triangle or per vertex; interpolate it.
+/// Gouraud: the colour was lit per vertex; interpolate it.
 template <typename Real, bool Perspective>
 void fill_lit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
               const FillSetup<Real>&) {
     fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
+}
+
+/// Flat: the triangle's one colour, written as is. (Interpolating it like
+/// Gouraud would give weights summing to 1 only up to rounding, so the colour
+/// would wander by an ulp across the triangle.)
+template <typename Real, bool Perspective>
+void fill_flat(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+               const FillSetup<Real>&) {
+    fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.v[0].lit; });
 }
 
 /// Phong compiled for one effect set. Without diffuse or specular it interpolates no normal.
@@ -171,6 +180,7 @@ void fill_phong_general(const DrawTriangle<Real>& draw, FillTarget<Real>& target
 /// What decides the kernel.
 struct KernelChoice {
     bool phong = false;
+    bool flat = false;
     bool perspective = true;
     bool specialized = true;
     bool per_sample_vectors = true;
@@ -195,6 +205,7 @@ FillKernel<Real> pick_phong_vectors_color(const KernelChoice& c) {
 
 template <typename Real, bool Perspective>
 FillKernel<Real> pick_kernel_for_projection(const KernelChoice& c) {
+    if (c.flat) return &fill_flat<Real, Perspective>;
     if (!c.phong) return &fill_lit<Real, Perspective>;
     if (!c.specialized) {
         return c.per_sample_vectors ? &fill_phong_general<Real, Perspective, true>

@@ -170,6 +170,7 @@ private:
         fill_setup_.color = colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[0]);
         KernelChoice choice;
         choice.phong = scene_.shader == Shader::phong;
+        choice.flat = scene_.shader == Shader::flat;
         choice.perspective = options_.interpolation == Interpolation::perspective_correct;
         choice.specialized = options_.specialize_effects;
         choice.per_sample_vectors = options_.light_vectors == LightVectors::shaded_point;
