@@ -31,7 +31,10 @@ int main(int argc, char** argv) {
     } catch (const CLI::Success& success) {
         return app.exit(success);  // --help, --version
     } catch (const CLI::ParseError& error) {
-        app.exit(error);
+        // One line, like every other error (CLI11's own printout takes three).
+        std::string command = "phongrast";
+        for (const CLI::App* sub : app.get_subcommands()) command += " " + sub->get_name();
+        std::cerr << "phongrast: error: " << error.what() << "; see " << command << " --help\n";
         return 2;
     }
 

@@ -1,0 +1,163 @@
+// Runs the phongrast executable and reads back what it wrote: PNG and EXR
+// pixels against the library's own render of the same scene, the sheet and
+// its figures, --repeat/--stats-json, and `generate`.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include "io_test_files.hpp"
+#include "phongrast/io/image_file.hpp"
+#include "phongrast/io/obj_file.hpp"
+#include "phongrast/io/scene_file.hpp"
+#include "phongrast/render.hpp"
+
+using namespace phongrast;
+
+namespace {
+
+const std::string data_folder = PHONGRAST_CLI_DATA;
+
+struct Run {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// Runs `phongrast ARGUMENTS` in `folder` and captures its exit status and output.
+Run run_cli(const TemporaryFolder& folder, const std::string& arguments) {
+    const std::string command = "cd '" + folder.file("") + "' && '" + std::string(PHONGRAST_CLI) + "' " + arguments +
+                                " > stdout.txt 2> stderr.txt";
+    const int raw = std::system(command.c_str());
+    Run run;
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    run.out = read_text(folder.file("stdout.txt"));
+    run.err = read_text(folder.file("stderr.txt"));
+    return run;
+}
+
+/// The library's render of a scene file, as the program should produce it in exact mode.
+RenderResult render_with_library(const std::string& scene_path) {
+    io::SceneFile file = io::read_scene_file(scene_path);
+    io::ObjFile obj = io::read_obj(file.mesh_path);
+    file.scene.mesh = std::move(obj.mesh);
+    file.scene.material = io::resolve_material(file.material, obj.material, nullptr);
+    return render(file.scene, RenderOptions::exact());
+}
+
+}  // namespace
+
+TEST_CASE("the PNG of a tiny scene has the expected 8-bit pixels") {
+    TemporaryFolder folder;
+    const Run run = run_cli(folder, "render '" + data_folder + "/triangle.json' -o tiny.png");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    CHECK_THAT(run.out, Catch::Matchers::Contains("1 triangles in, 1 drawn"));
+    const Image png = io::read_image(folder.file("tiny.png"));
+    REQUIRE(png.rows == 8);
+    REQUIRE(png.columns == 8);
+    // Ambient only: ka 1 x Ia 0.5 x red = (0.5, 0, 0) -> 128/255, no gamma curve.
+    CHECK(png.at(4, 4) == glm::vec3(128.0f / 255.0f, 0.0f, 0.0f));
+    CHECK(png.at(0, 0) == glm::vec3(0.0f, 0.0f, 1.0f));  // background
+    // Every pixel is the library's render, clamped and rounded to 8 bits.
+    const RenderResult expected = render_with_library(data_folder + "/triangle.json");
+    int covered = 0;
+    for (std::size_t i = 0; i < png.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const float value = std::min(1.0f, std::max(0.0f, expected.image.pixels[i][c]));
+            CHECK(png.pixels[i][c] == Approx(std::round(value * 255.0f) / 255.0f).margin(1e-6));
+        }
+        if (png.pixels[i].x > 0.0f) ++covered;
+    }
+    CHECK(covered == static_cast<int>(expected.stats.samples_shaded));
+    CHECK(covered > 4);
+}
+
+TEST_CASE("EXR output is the library's linear floats exactly") {
+    TemporaryFolder folder;
+    const Run run = run_cli(folder, "render '" + data_folder + "/triangle.json' --lighting full -o tiny.exr");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    io::SceneFile file = io::read_scene_file(data_folder + "/triangle.json");
+    file.scene.mesh = io::read_obj(file.mesh_path).mesh;
+    file.scene.material = io::resolve_material(file.material, std::nullopt, nullptr);
+    file.scene.lighting = Lighting::full();
+    const RenderResult expected = render(file.scene, RenderOptions::exact());
+    CHECK(io::read_image(folder.file("tiny.exr")).pixels == expected.image.pixels);
+}
+
+TEST_CASE("options mode seed and threads 1 give the library's seed render") {
+    TemporaryFolder folder;
+    const Run run = run_cli(folder, "render '" + data_folder + "/triangle.json' --mode seed --threads 1 -o seed.exr");
+    REQUIRE(run.status == 0);
+    io::SceneFile file = io::read_scene_file(data_folder + "/triangle.json");
+    file.scene.mesh = io::read_obj(file.mesh_path).mesh;
+    file.scene.material = io::resolve_material(file.material, std::nullopt, nullptr);
+    CHECK(io::read_image(folder.file("seed.exr")).pixels == render(file.scene, RenderOptions::seed()).image.pixels);
+}
+
+TEST_CASE("options repeat K and stats-json report K timed runs and the render statistics") {
+    TemporaryFolder folder;
+    const Run run = run_cli(folder, "render '" + data_folder + "/triangle.json' --repeat 3 --stats-json stats.json -o r.png");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    CHECK_THAT(run.out, Catch::Matchers::Contains("render time over 3 runs after 1 warm-up: median"));
+    const nlohmann::json stats = nlohmann::json::parse(read_text(folder.file("stats.json")));
+    REQUIRE(stats["render_seconds"]["runs"].size() == 3);
+    CHECK(stats["render_seconds"]["warm_up"] == true);
+    const double median = stats["render_seconds"]["median"];
+    CHECK(median >= stats["render_seconds"]["min"].get<double>());
+    CHECK(median <= stats["render_seconds"]["max"].get<double>());
+    CHECK(stats["stats"]["triangles_in"] == 1);
+    CHECK(stats["stats"]["triangles_drawn"] == 1);
+    CHECK(stats["scene"]["width"] == 8);
+}
+
+TEST_CASE("sheet writes the 4x2 grid and, with --figures, the eight figures") {
+    TemporaryFolder folder;
+    std::filesystem::create_directories(folder.file("figures"));
+    const Run run = run_cli(folder, "sheet '" + data_folder + "/triangle.json' --size 64x48 --figures figures -o sheet.png");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    const Image sheet = io::read_image(folder.file("sheet.png"));
+    CHECK(sheet.columns > 4 * 64);
+    CHECK(sheet.rows > 2 * 48);
+    for (const char* shader : {"gouraud", "phong"}) {
+        for (const char* lighting : {"ambient", "diffuse", "specular", "full"}) {
+            const std::string path = folder.file(std::string("figures/") + shader + "-" + lighting + ".png");
+            INFO(path);
+            REQUIRE(std::filesystem::exists(path));
+            CHECK(io::read_image(path).columns == 64);
+        }
+    }
+    // The ambient and diffuse figures differ (the sheet really changes the lighting).
+    CHECK(io::read_image(folder.file("figures/phong-ambient.png")).pixels !=
+          io::read_image(folder.file("figures/phong-diffuse.png")).pixels);
+}
+
+TEST_CASE("generate writes a closed, outward-facing, coloured mesh, the one in assets/default.obj") {
+    TemporaryFolder folder;
+    const Run run = run_cli(folder, "generate -o knot.obj");
+    REQUIRE(run.status == 0);
+    const io::ObjFile obj = io::read_obj(folder.file("knot.obj"));
+    CHECK(obj.mesh.triangles.size() == 2u * 240u * 20u);
+    CHECK(obj.mesh.colors.size() == obj.mesh.positions.size());
+    double signed_volume = 0.0;
+    for (const Triangle& t : obj.mesh.triangles) {
+        const glm::dvec3 &a = obj.mesh.positions[t[0]], &b = obj.mesh.positions[t[1]], &c = obj.mesh.positions[t[2]];
+        signed_volume += glm::dot(a, glm::cross(b, c)) / 6.0;
+    }
+    CHECK(signed_volume > 1.0);  // counter-clockwise seen from outside
+    CHECK(read_text(folder.file("knot.obj")) == read_text(data_folder + "/../../../assets/default.obj"));
+}
