@@ -152,13 +152,14 @@ void write_panels(const std::string& path, const std::vector<Panel>& panels) {
     if (panels.empty()) return;
     const int cell_w = panels[0].image.columns, cell_h = panels[0].image.rows, gap = 6, caption = 24, legend = 34;
     const int n = static_cast<int>(panels.size());
-    const int width = n * cell_w + (n + 1) * gap, height = caption + cell_h + gap + legend;
+    const int per_row = std::min(n, 4), panel_rows = (n + per_row - 1) / per_row;
+    const int width = per_row * cell_w + (per_row + 1) * gap, height = panel_rows * (caption + cell_h) + gap + legend;
     ImageBuf buf(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
     const float white[3] = {1, 1, 1};
     OIIO::ImageBufAlgo::fill(buf, white);
     for (int k = 0; k < n; ++k) {
         const Panel& panel = panels[k];
-        const int x0 = gap + k * (cell_w + gap), y0 = caption;
+        const int x0 = gap + (k % per_row) * (cell_w + gap), y0 = (k / per_row) * (caption + cell_h) + caption;
         for (int row = 0; row < panel.image.rows && row < cell_h; ++row) {
             for (int column = 0; column < panel.image.columns && column < cell_w; ++column) {
                 float rgb[3];
@@ -172,10 +173,10 @@ void write_panels(const std::string& path, const std::vector<Panel>& panels) {
                 buf.setpixel(x0 + column, y0 + row, rgb, 3);
             }
         }
-        text(buf, x0 + cell_w / 2, caption - 7, panel.caption, 14, kBlack, TextAlignX::Center);
+        text(buf, x0 + cell_w / 2, y0 - 7, panel.caption, 14, kBlack, TextAlignX::Center);
     }
     // Heat legend: the colour of errors from 1/255 to 0.5.
-    const int bar_x = gap, bar_w = std::min(width - 2 * gap - 260, 400), bar_y = caption + cell_h + gap + 4;
+    const int bar_x = gap, bar_w = std::min(width - 2 * gap - 330, 400), bar_y = panel_rows * (caption + cell_h) + gap + 4;
     for (int x = 0; x < bar_w; ++x) {
         const double e = std::exp(std::log(1.0 / 255.0) + (std::log(0.5) - std::log(1.0 / 255.0)) * x / (bar_w - 1));
         const Color c = heat(e * 1.0001);

@@ -132,17 +132,18 @@ inline NamedScene floor_scene(int size) {
 }
 
 inline NamedScene shiny_scene(int size) {
-    NamedScene s{"shiny", "curved sheet, 24x24 quads, n = 150, light 4 degrees above the horizon", {}};
+    NamedScene s{"shiny", "curved sheet, 24x24 quads, n = 150, lit from behind 4 degrees above its plane", {}};
     Scene& scene = s.scene;
     scene.mesh = scene_detail::grid(
         24, -2.0, 2.0, -2.0, 2.0,
         [](double x, double z) { return 0.12 * std::sin(1.7 * x) * std::cos(1.3 * z); },
         [](int i, int j) { return glm::vec3(0.5f + 0.02f * float(i % 5), 0.6f, 0.8f - 0.02f * float(j % 5)); });
-    scene_detail::set_view(scene, {0.0, 2.2, 3.6}, {0.0, 0.0, -0.2}, 45.0, size);
+    scene_detail::set_view(scene, {0.0, 0.9, 3.6}, {0.0, 0.0, -0.5}, 50.0, size);
     scene.image.background = glm::vec3(0.1f);
     scene.material = {glm::vec3(0.15f), glm::vec3(0.5f), glm::vec3(1.0f), 150.0f};
-    // Grazing: 0.5 up over 7 units away, about 4 degrees above the sheet's plane.
-    scene.lights = {{{-7.0, 0.5, -1.5}, glm::vec3(1.0f)}};
+    // Grazing: 0.5 up, 8 units behind the sheet (about 4 degrees above its plane),
+    // so the bumps' slopes reflect tight highlights toward the low eye.
+    scene.lights = {{{0.3, 0.5, -8.0}, glm::vec3(1.0f)}};
     scene.shader = Shader::phong;
     return s;
 }
