@@ -7,7 +7,8 @@
 #   bench/run_effects.sh [extra Google Benchmark flags, e.g. --benchmark_filter=mesh=spot/]
 #
 # Environment: BUILD_DIR (default build/bench), REPETITIONS (5), MIN_TIME
-# (seconds per repetition, 0.2). Output: $BUILD_DIR/effects.json, effects.md.
+# (seconds per repetition, 0.2). Output: $BUILD_DIR/effects.json, effects.md
+# (wall-clock) and effects-cpu.md (1-thread runs by CPU time).
 set -eu
 cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build/bench}
@@ -34,5 +35,8 @@ IFS='
 # shellcheck disable=SC2086
 python3 bench/effects_table.py "$build/effects.json" "started $start" \
   "\`uptime\` before: \`$load_before\`" "\`uptime\` after: \`$load_after\`" $notes >"$build/effects.md"
+# shellcheck disable=SC2086
+python3 bench/effects_table.py --clock=cpu "$build/effects.json" "started $start" \
+  "\`uptime\` before: \`$load_before\`" "\`uptime\` after: \`$load_after\`" $notes >"$build/effects-cpu.md"
 IFS=$old_ifs
-echo "tables written to $build/effects.md"
+echo "tables written to $build/effects.md (wall-clock) and $build/effects-cpu.md (1 thread, CPU time)"
