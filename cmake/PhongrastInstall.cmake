@@ -68,11 +68,41 @@ install(EXPORT phongrastTargets
   COMPONENT phongrast_development
 )
 
-# Read by phongrastConfig.cmake.in: whether the installed package has the io component.
+# phongrast_find_dependency_lines(<target> <out>): a find_dependency() line for each
+# package whose imported target <target> links, PUBLIC or PRIVATE (a static
+# library's private links reach the user's link line as $<LINK_ONLY:...>). Read
+# from the target itself so a dependency added in src/ cannot be forgotten here.
+# The package is the namespace of the imported target (glm::glm -> glm, TBB::tbb -> TBB).
+function(phongrast_find_dependency_lines target out)
+  get_target_property(links ${target} LINK_LIBRARIES)
+  set(packages "")
+  foreach(item IN LISTS links)
+    if(item MATCHES "^([A-Za-z0-9_]+)::" AND NOT CMAKE_MATCH_1 STREQUAL "phongrast")
+      list(APPEND packages "${CMAKE_MATCH_1}")
+    endif()
+  endforeach()
+  list(REMOVE_DUPLICATES packages)
+  set(lines "")
+  foreach(package IN LISTS packages)
+    string(APPEND lines "find_dependency(${package} CONFIG)\n")
+    if(package STREQUAL "OpenImageIO")
+      # Drops the /usr/include/opencv4 entry Debian's OpenImageIO config names even
+      # when that folder is missing (file installed next to phongrastConfig.cmake).
+      string(APPEND lines "include(\"\${CMAKE_CURRENT_LIST_DIR}/PhongrastOpenImageIO.cmake\")\n"
+                          "phongrast_find_openimageio()\n")
+    endif()
+  endforeach()
+  set(${out} "${lines}" PARENT_SCOPE)
+endfunction()
+
+# Read by phongrastConfig.cmake.in.
+phongrast_find_dependency_lines(phongrast PHONGRAST_CORE_DEPENDENCIES)
 if(TARGET phongrast_io)
   set(PHONGRAST_PACKAGE_HAS_IO ON)
+  phongrast_find_dependency_lines(phongrast_io PHONGRAST_IO_DEPENDENCIES)
 else()
   set(PHONGRAST_PACKAGE_HAS_IO OFF)
+  set(PHONGRAST_IO_DEPENDENCIES "")
 endif()
 configure_package_config_file(
   "${PROJECT_SOURCE_DIR}/cmake/phongrastConfig.cmake.in"

@@ -47,9 +47,18 @@ endif()
 run(configure COMMAND "${CMAKE_COMMAND}" ${configure_args})
 run(build COMMAND "${CMAKE_COMMAND}" --build "${CONSUMER_BINARY_DIR}" --config "${BUILD_TYPE}" --parallel 2)
 
-# Single-config generators put the program at the top; multi-config ones in <config>/.
-set(program "${CONSUMER_BINARY_DIR}/phongrast_consumer${CMAKE_EXECUTABLE_SUFFIX}")
-if(NOT EXISTS "${program}")
-  set(program "${CONSUMER_BINARY_DIR}/${BUILD_TYPE}/phongrast_consumer${CMAKE_EXECUTABLE_SUFFIX}")
+# Single-config generators put the programs at the top; multi-config ones in <config>/.
+function(find_program_file name out)
+  set(file "${CONSUMER_BINARY_DIR}/${name}${CMAKE_EXECUTABLE_SUFFIX}")
+  if(NOT EXISTS "${file}")
+    set(file "${CONSUMER_BINARY_DIR}/${BUILD_TYPE}/${name}${CMAKE_EXECUTABLE_SUFFIX}")
+  endif()
+  set(${out} "${file}" PARENT_SCOPE)
+endfunction()
+
+find_program_file(phongrast_consumer program)
+run("running phongrast_consumer" COMMAND "${program}")
+if(EXPECT_IO)
+  find_program_file(phongrast_consumer_io program)
+  run("running phongrast_consumer_io" COMMAND "${program}" "${CONSUMER_BINARY_DIR}/triangle.exr")
 endif()
-run("running the program" COMMAND "${program}")
