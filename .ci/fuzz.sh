@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/) with clang, AddressSanitizer and
+# UndefinedBehaviorSanitizer in build/fuzz, and runs each for a bounded time
+# from its seed corpus in fuzz/corpus/<target>/. A crash leaves its input in
+# build/fuzz/findings/ and makes this script fail; turn it into a regression
+# test (a fixture in tests/fuzz_regressions/ and a Catch2 case).
+#   FUZZ_SECONDS: run time per target (default 60).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+seconds="${FUZZ_SECONDS:-60}"
+build=build/fuzz
+sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$sanitizers" \
+  -DPHONGRAST_BUILD_FUZZERS=ON -DPHONGRAST_BUILD_IO=ON -DPHONGRAST_BUILD_APPS=OFF \
+  -DPHONGRAST_BUILD_TESTS=OFF -DPHONGRAST_INSTALL=OFF -DPHONGRAST_WERROR=ON
+cmake --build "$build" -j2 --target fuzz_obj fuzz_scene
+
+mkdir -p "$build/findings"
+for target in fuzz_obj fuzz_scene; do
+  name="${target#fuzz_}"
+  # New inputs go to a scratch corpus so the repository's seeds stay as they are.
+  work="$build/corpus/$name"
+  mkdir -p "$work"
+  echo "== $target: ${seconds}s from fuzz/corpus/$name"
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    "$build/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
+    -max_len=4096 -print_final_stats=1 -artifact_prefix="$build/findings/$name-" \
+    "$work" "fuzz/corpus/$name"
+done
