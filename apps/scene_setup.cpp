@@ -38,9 +38,14 @@ glm::dvec3 to_vector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; 
 }  // namespace
 
 std::string find_default_scene() {
+    // An installed copy moved to another prefix still finds its assets next to
+    // itself: <prefix>/bin/phongrast -> <prefix>/share/phongrast.
+    std::error_code ignored;
+    const fs::path executable = fs::read_symlink("/proc/self/exe", ignored);
     const std::string candidates[] = {
         "assets/default.json",
         std::string(PHONGRAST_SOURCE_ASSETS_DIR) + "/default.json",
+        (executable.parent_path().parent_path() / "share/phongrast/default.json").string(),
         std::string(PHONGRAST_INSTALLED_ASSETS_DIR) + "/default.json",
     };
     std::string tried;

@@ -17,8 +17,9 @@ struct PreparedScene {
     std::string name;  ///< stem for default output names ("default", "bunny")
 };
 
-/// Finds assets/default.json: ./assets, then the source tree, then the
-/// installed share folder. Throws phongrast::io::FileError listing where it looked.
+/// Finds assets/default.json: ./assets, then the source tree, then
+/// <folder of the executable>/../share/phongrast, then the share folder of the
+/// configured install prefix. Throws phongrast::io::FileError listing where it looked.
 std::string find_default_scene();
 
 /// Loads, frames and overrides. Notes (defaults used, the chosen scene of an
