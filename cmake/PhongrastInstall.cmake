@@ -73,12 +73,22 @@ install(EXPORT phongrastTargets
 # library's private links reach the user's link line as $<LINK_ONLY:...>). Read
 # from the target itself so a dependency added in src/ cannot be forgotten here.
 # The package is the namespace of the imported target (glm::glm -> glm, TBB::tbb -> TBB).
+# An imported target without a namespace (xsimd) is its own package name when it is
+# visible here; targets imported in a subdirectory are not, so prefer Namespace:: names.
+# Plain library names (m, pthread) need no package.
 function(phongrast_find_dependency_lines target out)
   get_target_property(links ${target} LINK_LIBRARIES)
   set(packages "")
   foreach(item IN LISTS links)
-    if(item MATCHES "^([A-Za-z0-9_]+)::" AND NOT CMAKE_MATCH_1 STREQUAL "phongrast")
+    if(item MATCHES "^phongrast(::|_|$)")
+      continue()  # ours: install(EXPORT) insists they are exported too
+    elseif(item MATCHES "^([A-Za-z0-9_]+)::")
       list(APPEND packages "${CMAKE_MATCH_1}")
+    elseif(TARGET "${item}")
+      get_target_property(imported "${item}" IMPORTED)
+      if(imported)
+        list(APPEND packages "${item}")
+      endif()
     endif()
   endforeach()
   list(REMOVE_DUPLICATES packages)
