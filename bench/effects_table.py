@@ -120,8 +120,11 @@ def fit_line(xs, ys):
 
 def mesh_summary(runs, mesh):
     run = runs.get(mesh=mesh, shader="phong", threads=1)
+    if not run:  # any run of the mesh without culling
+        run = next((e for e in runs.runs.values()
+                    if e["fields"].get("mesh") == mesh and e["fields"].get("cull") == "off" and "ms" in e), None)
     if not run:
-        return ""
+        return "no runs"
     return f"{int(run.get('drawn', 0)):,} triangles drawn, {int(run.get('samples', 0)):,} pixels shaded"
 
 
