@@ -107,6 +107,12 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         } else if (file.mesh_path.empty()) {
             throw io::FileError(input + ": /mesh: missing required field; expected an OBJ file name (or give --mesh)");
         }
+        std::error_code error;
+        if (mesh_path.empty() && !fs::exists(file.mesh_path, error)) {
+            // Name the scene field too: the path was resolved against the scene's folder.
+            throw io::FileError(input + ": /mesh: " + file.mesh_path +
+                                ": mesh not found (no such file; a relative \"mesh\" is relative to the scene file)");
+        }
         io::ObjFile obj = load_mesh(file.mesh_path, messages);
         scene = std::move(file.scene);
         scene.mesh = std::move(obj.mesh);
