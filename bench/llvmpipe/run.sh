@@ -26,9 +26,17 @@ echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -
 echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src include 2>/dev/null || echo ' (+ uncommitted changes in src/ or include/)')"
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
-"$bench" --threads 1 "$@"
-echo
-"$bench" --threads 2 --images "$build/llvmpipe-images" "$@"
+output="$build/llvmpipe-output.txt"
+{
+  "$bench" --threads 1 "$@"
+  echo
+  "$bench" --threads 2 --images "$build/llvmpipe-images" "$@"
+} | tee "$output"
 echo
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "images: $build/llvmpipe-images"
+if command -v python3 >/dev/null; then
+  echo
+  echo "Both thread counts in one table:"
+  python3 bench/llvmpipe/merge_tables.py "$output"
+fi
