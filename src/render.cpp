@@ -93,9 +93,12 @@ public:
         stats.effects = effects_;
         if (options_.back_faces == BackFaces::cull_when_hidden) {
             hidden_back_faces_ = find_hidden_back_faces(scene_.mesh, scene_.camera.eye);
-            stats.back_faces_culled = hidden_back_faces_ != HiddenBackFaces::unknown;
         }
         transform_vertices();
+        if (hidden_back_faces_ != HiddenBackFaces::unknown && front_faces_may_be_cut()) {
+            hidden_back_faces_ = HiddenBackFaces::unknown;
+        }
+        stats.back_faces_culled = hidden_back_faces_ != HiddenBackFaces::unknown;
         build_light_rig();
         choose_kernel();
         if (scene_.shader == Shader::gouraud &&
@@ -145,6 +148,20 @@ private:
                 v.lit = Vec3<Real>(Real(0));
             }
         });
+    }
+
+    // Culling is only invisible when every front face is drawn whole: a front
+    // face dropped by the seed's border rule, or cut by the near plane, opens
+    // a hole through which painter's order (and the depth buffer) would show
+    // the back face behind it. Checked on the vertices, conservatively.
+    bool front_faces_may_be_cut() const {
+        for (std::size_t i = 0; i < camera_depth_.size(); ++i) {
+            if (options_.border == BorderPolicy::drop_triangle ? !vertex_inside_image(static_cast<std::uint32_t>(i))
+                                                               : camera_depth_[i] < near_) {
+                return true;
+            }
+        }
+        return false;
     }
 
     void build_light_rig() {

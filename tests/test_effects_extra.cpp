@@ -252,8 +252,11 @@ TEST_CASE("every triangle is accounted for exactly once, with and without cullin
                 CHECK(s.triangles_dropped > 0);
                 CHECK(s.triangles_clipped == 0);
             }
-            CHECK(s.triangles_culled ==
-                  (back == BackFaces::cull_when_hidden ? count_back_faces(scene.mesh, scene.camera.eye) : 0));
+            // The seed's rule drops front faces that cross the border, which would
+            // uncover back faces: culling is then switched off.
+            const bool culls = back == BackFaces::cull_when_hidden && options.border == BorderPolicy::clip;
+            CHECK(s.back_faces_culled == culls);
+            CHECK(s.triangles_culled == (culls ? count_back_faces(scene.mesh, scene.camera.eye) : 0));
         }
     }
 }
@@ -295,14 +298,11 @@ TEST_CASE("meshes that are not a consistently oriented closed surface are never 
     }
 }
 
-// Known gap (reported to the lead): a two-sided sheet (every triangle also
-// listed with the opposite winding) matches every edge and encloses no
-// volume, but find_hidden_back_faces tests the summed volume for exactly
-// zero, and rounding leaves ~1e-17, so the sheet is taken as closed and one
-// side is culled. In flat shading that changes pixels (the two sides sum
-// their vertices in a different order) and they no longer match the depth
-// buffer. Tagged [!shouldfail] until the volume test has a tolerance.
-TEST_CASE("a two-sided sheet encloses nothing and is never culled", "[!shouldfail]") {
+// A two-sided sheet (every triangle also listed with the opposite winding)
+// matches every edge and encloses no volume; rounding leaves ~1e-17 of it, so
+// the volume test must have a tolerance relative to the terms it sums, or one
+// side would be culled (and flat pixels would then change).
+TEST_CASE("a two-sided sheet encloses nothing and is never culled") {
     RenderOptions cull = RenderOptions::exact();
     cull.back_faces = BackFaces::cull_when_hidden;
     Scene scene = coloured_sphere_scene();
@@ -349,13 +349,11 @@ TEST_CASE("two closed parts with the same orientation are culled; the changed pi
     }
 }
 
-// Known gap (reported to the lead): find_hidden_back_faces only checks that
-// each edge is matched, that the eye's total winding number is 0 and the sign
-// of the total volume. Two disjoint closed parts wound in opposite directions
-// pass all three, so the smaller part is culled on the wrong side: its faces
-// that face the eye disappear. Tagged [!shouldfail] until the detection
-// rejects (or handles per part) such meshes; then drop the tag.
-TEST_CASE("two closed parts wound in opposite directions are not culled on the wrong side", "[!shouldfail]") {
+// Two disjoint closed parts wound in opposite directions match every edge,
+// give the eye a total winding number of 0 and a total volume of one sign;
+// only a per-part orientation check keeps the smaller part from being culled
+// on the wrong side.
+TEST_CASE("two closed parts wound in opposite directions are not culled on the wrong side") {
     const Mesh ball = test_meshes::uv_sphere(12, 24, 0.5);
     Scene scene = coloured_sphere_scene();
     scene.mesh = Mesh{};
@@ -368,13 +366,12 @@ TEST_CASE("two closed parts wound in opposite directions are not culled on the w
     CHECK(change.agree_with_depth == change.changed);
 }
 
-// Known gap (reported to the lead): with the seed's border rule a front face
-// that crosses the image border is dropped whole, so painter's order shows
-// the back face behind it through the hole; culling removes that back face
-// and the pixel turns to background, which is neither "a back face drawn over
-// a front face" nor the depth-buffer picture. Tagged [!shouldfail] until
-// culling is disabled (or limited) when triangles are dropped.
-TEST_CASE("with the seed's border rule, culling changes only pixels the depth buffer agrees with", "[!shouldfail]") {
+// With the seed's border rule a front face that crosses the image border is
+// dropped whole, so painter's order shows the back face behind it through the
+// hole; culling it would turn the pixel to background, which is neither "a
+// back face drawn over a front face" nor the depth-buffer picture. So culling
+// is switched off whenever a front face may be dropped or cut.
+TEST_CASE("with the seed's border rule, culling changes only pixels the depth buffer agrees with") {
     Scene scene = coloured_sphere_scene();
     scene.camera.sensor_height = scene.camera.sensor_width = 0.8;  // the sphere crosses the border
     scene.image = {64, 64, {0, 0, 0}};
