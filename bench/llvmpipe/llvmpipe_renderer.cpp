@@ -180,6 +180,75 @@ Matrix frustum(double left, double right, double bottom, double top, double near
             0.0, 0.0, -2 * far * near / (far - near), 0.0};
 }
 
+/// Vertex buffer: position, normal, colour (white when the mesh has none), 9 floats
+/// per vertex, bound to attributes 0, 1 and 2.
+void upload_vertices(const phongrast::Mesh& mesh, GLuint buffer) {
+    std::vector<float> interleaved;
+    interleaved.reserve(mesh.positions.size() * 9);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        const glm::vec3 p(mesh.positions[i]);
+        const glm::vec3 c = mesh.colors.empty() ? glm::vec3(1.0f) : mesh.colors[i];
+        for (float value : {p.x, p.y, p.z, mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z, c.x, c.y, c.z}) {
+            interleaved.push_back(value);
+        }
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
+    const GLsizei stride = 9 * sizeof(float);
+    for (GLuint attribute = 0; attribute < 3; ++attribute) {
+        glEnableVertexAttribArray(attribute);
+        glVertexAttribPointer(attribute, 3, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(std::size_t(attribute) * 3 * sizeof(float)));
+    }
+}
+
+/// The contract's glFrustum after gluLookAt. The near plane is moved from
+/// `focal` to 1e-4 x focal with the sides scaled alike, which keeps the x/y
+/// projection identical and clips where phongrast clips (a frustum with
+/// near = focal would cut away everything between the eye and the image plane).
+/// The far plane lies beyond every vertex.
+Matrix clip_from_world(const phongrast::Camera& camera, const std::vector<glm::dvec3>& positions) {
+    const glm::dvec3 forward = glm::normalize(camera.lookat - camera.eye);
+    double farthest = camera.focal;
+    for (const glm::dvec3& p : positions) farthest = std::max(farthest, glm::dot(forward, p - camera.eye));
+    const double scale = 1e-4;
+    const double half_width = 0.5 * camera.sensor_width * scale;
+    const double half_height = 0.5 * camera.sensor_height * scale;
+    return multiply(frustum(-half_width, half_width, -half_height, half_height, camera.focal * scale, 2.0 * farthest),
+                    look_at(camera.eye, camera.lookat, camera.up));
+}
+
+/// The uniforms of kLightingGlsl and the camera matrix.
+void set_uniforms(GLuint program, const phongrast::Scene& scene) {
+    const Matrix matrix_double = clip_from_world(scene.camera, scene.mesh.positions);
+    std::array<float, 16> matrix{};
+    std::transform(matrix_double.begin(), matrix_double.end(), matrix.begin(), [](double v) { return float(v); });
+    glUniformMatrix4fv(glGetUniformLocation(program, "u_clip_from_world"), 1, GL_FALSE, matrix.data());
+
+    std::vector<float> light_positions, light_intensities;
+    for (const phongrast::PointLight& light : scene.lights) {
+        const glm::vec3 p(light.position);
+        light_positions.insert(light_positions.end(), {p.x, p.y, p.z});
+        light_intensities.insert(light_intensities.end(), {light.intensity.x, light.intensity.y, light.intensity.z});
+    }
+    if (!scene.lights.empty()) {
+        glUniform3fv(glGetUniformLocation(program, "u_light_position"), GLsizei(scene.lights.size()),
+                     light_positions.data());
+        glUniform3fv(glGetUniformLocation(program, "u_light_intensity"), GLsizei(scene.lights.size()),
+                     light_intensities.data());
+    }
+    const glm::vec3 eye(scene.camera.eye);
+    const glm::vec3 ambient_factor = scene.material.ka * scene.ambient;
+    glUniform3f(glGetUniformLocation(program, "u_eye"), eye.x, eye.y, eye.z);
+    glUniform3f(glGetUniformLocation(program, "u_ambient_factor"), ambient_factor.x, ambient_factor.y,
+                ambient_factor.z);
+    glUniform3f(glGetUniformLocation(program, "u_kd"), scene.material.kd.x, scene.material.kd.y,
+                scene.material.kd.z);
+    glUniform3f(glGetUniformLocation(program, "u_ks"), scene.material.ks.x, scene.material.ks.y,
+                scene.material.ks.z);
+    glUniform1f(glGetUniformLocation(program, "u_n"), scene.material.n);
+}
+
 }  // namespace
 
 struct LlvmpipeRenderer::State {
@@ -253,74 +322,17 @@ void LlvmpipeRenderer::load(const phongrast::Scene& scene) {
     glDisable(GL_DITHER);
     glDisable(GL_BLEND);
 
-    // Vertex buffer: position, normal, colour (white when the mesh has none), 9 floats.
-    std::vector<float> interleaved;
-    interleaved.reserve(mesh.positions.size() * 9);
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        const glm::vec3 p(mesh.positions[i]);
-        const glm::vec3 c = mesh.colors.empty() ? glm::vec3(1.0f) : mesh.colors[i];
-        for (float value : {p.x, p.y, p.z, mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z, c.x, c.y, c.z}) {
-            interleaved.push_back(value);
-        }
-    }
-    glBindBuffer(GL_ARRAY_BUFFER, s.vertex_buffer);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
-    const GLsizei stride = 9 * sizeof(float);
-    for (GLuint attribute = 0; attribute < 3; ++attribute) {
-        glEnableVertexAttribArray(attribute);
-        glVertexAttribPointer(attribute, 3, GL_FLOAT, GL_FALSE, stride,
-                              reinterpret_cast<const void*>(std::size_t(attribute) * 3 * sizeof(float)));
-    }
+    upload_vertices(mesh, s.vertex_buffer);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s.index_buffer);
 
     if (s.program != 0) glDeleteProgram(s.program);
     const bool phong = scene.shader == phongrast::Shader::phong;
     s.program = link_program(phong, scene.lights.size());
     glUseProgram(s.program);
+    set_uniforms(s.program, scene);
 
-    // Camera: the contract's glFrustum after gluLookAt. The near plane is moved
-    // from `focal` to 1e-4 x focal with the sides scaled alike, which keeps the
-    // x/y projection identical and clips where phongrast clips (a frustum with
-    // near = focal would cut away everything between the eye and the image plane).
-    const phongrast::Camera& camera = scene.camera;
-    s.eye = camera.eye;
-    s.forward = glm::normalize(camera.lookat - camera.eye);
-    double farthest = camera.focal;
-    for (const glm::dvec3& p : mesh.positions) farthest = std::max(farthest, glm::dot(s.forward, p - s.eye));
-    const double scale = 1e-4;
-    const double half_width = 0.5 * camera.sensor_width * scale;
-    const double half_height = 0.5 * camera.sensor_height * scale;
-    const Matrix clip_from_world =
-        multiply(frustum(-half_width, half_width, -half_height, half_height, camera.focal * scale, 2.0 * farthest),
-                 look_at(camera.eye, camera.lookat, camera.up));
-    std::array<float, 16> matrix{};
-    std::transform(clip_from_world.begin(), clip_from_world.end(), matrix.begin(),
-                   [](double v) { return float(v); });
-    glUniformMatrix4fv(glGetUniformLocation(s.program, "u_clip_from_world"), 1, GL_FALSE, matrix.data());
-
-    std::vector<float> light_positions, light_intensities;
-    for (const phongrast::PointLight& light : scene.lights) {
-        const glm::vec3 p(light.position);
-        light_positions.insert(light_positions.end(), {p.x, p.y, p.z});
-        light_intensities.insert(light_intensities.end(), {light.intensity.x, light.intensity.y, light.intensity.z});
-    }
-    if (!scene.lights.empty()) {
-        glUniform3fv(glGetUniformLocation(s.program, "u_light_position"), GLsizei(scene.lights.size()),
-                     light_positions.data());
-        glUniform3fv(glGetUniformLocation(s.program, "u_light_intensity"), GLsizei(scene.lights.size()),
-                     light_intensities.data());
-    }
-    const glm::vec3 eye(camera.eye);
-    const glm::vec3 ambient_factor = scene.material.ka * scene.ambient;
-    glUniform3f(glGetUniformLocation(s.program, "u_eye"), eye.x, eye.y, eye.z);
-    glUniform3f(glGetUniformLocation(s.program, "u_ambient_factor"), ambient_factor.x, ambient_factor.y,
-                ambient_factor.z);
-    glUniform3f(glGetUniformLocation(s.program, "u_kd"), scene.material.kd.x, scene.material.kd.y,
-                scene.material.kd.z);
-    glUniform3f(glGetUniformLocation(s.program, "u_ks"), scene.material.ks.x, scene.material.ks.y,
-                scene.material.ks.z);
-    glUniform1f(glGetUniformLocation(s.program, "u_n"), scene.material.n);
-
+    s.eye = scene.camera.eye;
+    s.forward = glm::normalize(scene.camera.lookat - scene.camera.eye);
     s.positions = mesh.positions;
     s.triangles = mesh.triangles;
     s.background = scene.image.background;
