@@ -31,12 +31,18 @@ double median(std::vector<double> values) {
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-/// Median of `repeat` calls after one warm-up call; each call returns seconds.
-double median_seconds(int repeat, const std::function<double()>& run) {
-    run();
-    std::vector<double> samples;
-    for (int i = 0; i < repeat; ++i) samples.push_back(run());
-    return median(samples);
+/// Runs every contender once as a warm-up, then `repeat` rounds that call each
+/// contender once in turn, and returns each one's median. Interleaving keeps
+/// the ratios fair when the machine's load changes during the measurement.
+std::vector<double> interleaved_medians(int repeat, const std::vector<std::function<double()>>& contenders) {
+    for (const auto& run : contenders) run();
+    std::vector<std::vector<double>> samples(contenders.size());
+    for (int round = 0; round < repeat; ++round) {
+        for (std::size_t k = 0; k < contenders.size(); ++k) samples[k].push_back(contenders[k]());
+    }
+    std::vector<double> medians;
+    for (const auto& values : samples) medians.push_back(median(values));
+    return medians;
 }
 
 struct Settings {
@@ -59,7 +65,7 @@ std::vector<NamedScene> make_scenes(const Settings& settings) {
 
 void run(const Settings& settings) {
     llvmpipe_compare::LlvmpipeRenderer llvmpipe;
-    std::printf("llvmpipe: %s, LP_NUM_THREADS=%s; phongrast threads=%d; median of %d runs after 1 warm-up\n\n",
+    std::printf("llvmpipe: %s, LP_NUM_THREADS=%s; phongrast threads=%d; median of %d interleaved rounds after 1 warm-up\n\n",
                 llvmpipe.description().c_str(), std::getenv("LP_NUM_THREADS"), settings.threads, settings.repeat);
 
     std::printf("| scene | triangles | image | shader | threads | phongrast exact ms | phongrast seed ms | "
@@ -75,27 +81,27 @@ void run(const Settings& settings) {
             phongrast::RenderOptions seed = phongrast::RenderOptions::seed();
             exact.threads = seed.threads = settings.threads;
 
-            phongrast::Image phongrast_image;
-            const double exact_s = median_seconds(settings.repeat, [&] {
+            const auto time_phongrast = [&scene](const phongrast::RenderOptions& options,
+                                                 phongrast::Image* keep) {
                 const auto start = std::chrono::steady_clock::now();
-                phongrast::RenderResult result = phongrast::render(scene, exact);
+                phongrast::RenderResult result = phongrast::render(scene, options);
                 const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                phongrast_image = std::move(result.image);
+                if (keep) *keep = std::move(result.image);
                 return seconds;
-            });
-            const double seed_s = median_seconds(settings.repeat, [&] {
-                const auto start = std::chrono::steady_clock::now();
-                phongrast::RenderResult result = phongrast::render(scene, seed);
-                return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            });
-
-            llvmpipe.load(scene);
+            };
+            phongrast::Image phongrast_image;
             std::vector<double> sort_s;
-            const double llvmpipe_s = median_seconds(settings.repeat, [&] {
-                const llvmpipe_compare::FrameTimes times = llvmpipe.draw();
-                sort_s.push_back(times.sort);
-                return times.total;
-            });
+            llvmpipe.load(scene);
+            const std::vector<double> medians = interleaved_medians(
+                settings.repeat, {[&] { return time_phongrast(exact, &phongrast_image); },
+                                  [&] { return time_phongrast(seed, nullptr); },
+                                  [&] {
+                                      const llvmpipe_compare::FrameTimes times = llvmpipe.draw();
+                                      sort_s.push_back(times.sort);
+                                      return times.total;
+                                  }});
+            const double exact_s = medians[0], seed_s = medians[1], llvmpipe_s = medians[2];
+            sort_s.erase(sort_s.begin());  // the warm-up frame
             const phongrast::Image llvmpipe_image = llvmpipe.image();
 
             const double exact_ratio = exact_s / llvmpipe_s;
