@@ -4,13 +4,18 @@ per thread count) into one Markdown table sorted by scene, shader, threads.
 Reads run.sh's output on stdin or from the files named as arguments."""
 import fileinput
 
-rows, scene_order = [], []
+rows, scene_order, seen = [], [], set()
 for line in fileinput.input():
     if not line.startswith("| ") or line.startswith("| scene"):
         continue
     cells = [cell.strip() for cell in line.strip().strip("|").split("|")]
     if len(cells) != 11:
         continue
+    cells[1] = cells[1].replace(",", "")
+    key = (cells[0], cells[3], cells[4])
+    if key in seen:  # a merged table printed earlier (run.sh's own output) repeats rows
+        continue
+    seen.add(key)
     rows.append(cells)
     if cells[0] not in scene_order:
         scene_order.append(cells[0])
