@@ -47,8 +47,10 @@ inline glm::dvec3 at_pixel(const phongrast::Scene& scene, double column, double 
     return {(column / scene.image.columns - 0.5) * depth, (0.5 - row / scene.image.rows) * depth, -depth};
 }
 
-inline std::uint32_t add_triangle(phongrast::Mesh& mesh, const glm::dvec3& a, const glm::dvec3& b,
-                                  const glm::dvec3& c) {
+// Corners by value: callers may pass the mesh's own positions, which the
+// push_backs below can reallocate (AddressSanitizer caught that aliasing).
+inline std::uint32_t add_triangle(phongrast::Mesh& mesh, const glm::dvec3 a, const glm::dvec3 b,
+                                  const glm::dvec3 c) {
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
     // Three push_backs, not insert({a, b, c}): GCC 12 warns falsely (stringop-overflow) on the latter.
     mesh.positions.push_back(a);
