@@ -1,0 +1,94 @@
+// Renders one scene of the llvmpipe comparison (bench/llvmpipe/scenes.cpp and
+// asset_scenes.cpp) K times and prints the median, minimum and maximum render
+// time and the peak resident memory. With --repeat 1 --warmup 0 it is the
+// program to run under valgrind --tool=callgrind (instruction counts do not
+// depend on what else the machine is doing), which is how the "Speed (issue
+// 8)" section of docs/performance.md compares the renderer before and after.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "asset_scenes.hpp"
+#include "phongrast/render.hpp"
+#include "scenes.hpp"
+
+namespace {
+
+llvmpipe_compare::NamedScene find_scene(const std::string& name, int rows) {
+    if (name == "icosphere-9.7k") return llvmpipe_compare::icosphere_scene(name, 22, rows > 0 ? rows : 512);
+    if (name == "icosphere-1.3M") return llvmpipe_compare::icosphere_scene(name, 256, rows > 0 ? rows : 1024);
+    for (llvmpipe_compare::NamedScene& scene : llvmpipe_compare::asset_scenes(rows > 0 ? rows : 512)) {
+        if (scene.name == name) return scene;
+    }
+    throw std::invalid_argument("--scene: expected icosphere-9.7k, icosphere-1.3M or a mesh of ../shared/assets, got '" +
+                                name + "'");
+}
+
+double peak_rss_mib() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Render one llvmpipe-comparison scene with phongrast and time it"};
+    std::string name = "icosphere-9.7k", shader = "phong", mode = "exact";
+    std::string dump, precision = "float";
+    int rows = 0, threads = 1, repeat = 5, warmup = 1;
+    app.add_option("--scene", name, "icosphere-9.7k, icosphere-1.3M, or a mesh name of ../shared/assets (suzanne, ...)");
+    app.add_option("--rows", rows, "image side in pixels (default: the comparison's)");
+    app.add_option("--shader", shader, "flat, gouraud or phong");
+    app.add_option("--mode", mode, "exact or seed")->check(CLI::IsMember({"exact", "seed"}));
+    app.add_option("--threads", threads, "RenderOptions::threads");
+    app.add_option("--repeat", repeat, "timed renders")->check(CLI::Range(1, 100000));
+    app.add_option("--warmup", warmup, "untimed renders first")->check(CLI::Range(0, 100));
+    app.add_option("--precision", precision, "float or double")->check(CLI::IsMember({"float", "double"}));
+    app.add_option("--dump", dump, "write the last image's raw float RGB pixels here (to compare two builds with cmp)");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        llvmpipe_compare::NamedScene named = find_scene(name, rows);
+        named.scene.shader = phongrast::parse_shader(shader);
+        phongrast::RenderOptions options =
+            mode == "seed" ? phongrast::RenderOptions::seed() : phongrast::RenderOptions::exact();
+        options.threads = threads;
+        options.precision =
+            precision == "double" ? phongrast::Precision::double_float : phongrast::Precision::single_float;
+        const double rss_scene = peak_rss_mib();
+        for (int i = 0; i < warmup; ++i) phongrast::render(named.scene, options);
+        std::vector<double> ms;
+        phongrast::RenderResult result;
+        for (int i = 0; i < repeat; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            result = phongrast::render(named.scene, options);
+            ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        }
+        const phongrast::RenderStats& stats = result.stats;
+        if (!dump.empty()) {
+            std::FILE* file = std::fopen(dump.c_str(), "wb");
+            if (!file) throw std::runtime_error("--dump: cannot write " + dump);
+            std::fwrite(result.image.pixels.data(), sizeof(glm::vec3), result.image.pixels.size(), file);
+            std::fclose(file);
+        }
+        std::sort(ms.begin(), ms.end());
+        std::printf("%s %dx%d %s %s threads=%d: median %.3f ms, min %.3f, max %.3f (%d renders); "
+                    "%llu triangles drawn, %llu samples; peak RSS %.1f MiB (%.1f MiB before rendering)\n",
+                    name.c_str(), named.scene.image.columns, named.scene.image.rows, shader.c_str(), mode.c_str(),
+                    threads, ms[ms.size() / 2], ms.front(), ms.back(), repeat,
+                    static_cast<unsigned long long>(stats.triangles_drawn),
+                    static_cast<unsigned long long>(stats.samples_shaded), peak_rss_mib(), rss_scene);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "speed_once: %s\n", error.what());
+        return 1;
+    }
+    return 0;
+}
