@@ -188,6 +188,29 @@ inline void normalize_lanes(int n, Lanes<Real>& x, Lanes<Real>& y, Lanes<Real>& 
     }
 }
 
+/// out = x^exponent per lane, for x in [0, 1]. A whole exponent up to 256 (the
+/// usual case: 16, 32, ...) is computed by repeated squaring, in vector
+/// registers, within a few ulps of std::pow (0^0 = 1 as the contract says);
+/// any other exponent calls std::pow lane by lane.
+template <typename Real>
+inline void power_lanes(int n, const Lanes<Real>& x, Real exponent, Lanes<Real>& out) {
+    if (exponent >= Real(0) && exponent <= Real(256) && exponent == std::floor(exponent)) {
+        for (int l = 0; l < n; ++l) out[l] = Real(1);
+        Lanes<Real> square;
+        for (int l = 0; l < n; ++l) square[l] = x[l];
+        for (unsigned bits = static_cast<unsigned>(exponent); bits != 0; bits >>= 1) {
+            if (bits & 1u) {
+                for (int l = 0; l < n; ++l) out[l] *= square[l];
+            }
+            if (bits > 1) {
+                for (int l = 0; l < n; ++l) square[l] *= square[l];
+            }
+        }
+        return;
+    }
+    for (int l = 0; l < n; ++l) out[l] = std::pow(x[l], exponent);
+}
+
 /// Shades the n samples whose weights are w into out (three channels).
 template <typename Real, bool PerSampleVectors, bool UniformColor, typename Terms>
 void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
@@ -271,7 +294,7 @@ void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>*
                 const Real clamped_low = Real(0) < d ? d : Real(0);
                 r_dot_v[l] = clamped_low < Real(1) ? clamped_low : Real(1);
             }
-            for (int l = 0; l < n; ++l) highlight[l] = std::pow(r_dot_v[l], exponent);
+            power_lanes(n, r_dot_v, exponent, highlight);
             const Vec3<Real> intensity_ks = intensity * ks;
             for (int l = 0; l < n; ++l) {
                 const Real eye_length2 = (eye[0][l] * eye[0][l] + eye[1][l] * eye[1][l]) + eye[2][l] * eye[2][l];
