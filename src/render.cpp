@@ -18,6 +18,7 @@
 #include <tbb/task_arena.h>
 
 #include "clipping.hpp"
+#include "depth_sort.hpp"
 #include "fill_kernels.hpp"
 #include "phongrast/render.hpp"
 #include "raster.hpp"
@@ -231,11 +232,7 @@ private:
             const Triangle& tri = triangles[t];
             depth[t] = (camera_depth_[tri[0]] + camera_depth_[tri[1]] + camera_depth_[tri[2]]) / 3.0;
         }
-        std::vector<std::uint32_t> order(triangles.size());
-        std::iota(order.begin(), order.end(), 0u);
-        std::stable_sort(order.begin(), order.end(),
-                         [&depth](std::uint32_t a, std::uint32_t b) { return depth[a] > depth[b]; });
-        return order;
+        return farthest_first_order(depth);
     }
 
     // ---- Triangle setup -----------------------------------------------------------

@@ -1,0 +1,58 @@
+// The radix painter's sort gives std::stable_sort's order exactly.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "depth_sort.hpp"
+
+using phongrast::detail::farthest_first_order;
+
+namespace {
+
+std::vector<std::uint32_t> reference_order(const std::vector<double>& depth) {
+    std::vector<std::uint32_t> order(depth.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&depth](std::uint32_t a, std::uint32_t b) { return depth[a] > depth[b]; });
+    return order;
+}
+
+}  // namespace
+
+TEST_CASE("radix painter's order equals a stable sort, ties in mesh order") {
+    std::mt19937_64 random(8);
+    for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(100), std::size_t(255), std::size_t(256),
+                          std::size_t(5000), std::size_t(70000)}) {
+        std::vector<double> depth(n);
+        std::uniform_real_distribution<double> spread(-5.0, 20.0);
+        std::uniform_int_distribution<int> pick(0, 9);
+        for (double& d : depth) {
+            // Many exact ties, both zeros, negatives (behind the eye), tiny and huge values.
+            switch (pick(random)) {
+                case 0: d = 3.0; break;
+                case 1: d = 0.0; break;
+                case 2: d = -0.0; break;
+                case 3: d = 1e-300; break;
+                case 4: d = -1e300; break;
+                case 5: d = std::nextafter(3.0, 4.0); break;
+                default: d = spread(random);
+            }
+        }
+        INFO("n = " << n);
+        CHECK(farthest_first_order(depth) == reference_order(depth));
+    }
+}
+
+TEST_CASE("radix painter's order of depths sharing their high bits") {
+    // Depths in [7, 7.001): sign, exponent and leading mantissa bits equal, so passes are skipped.
+    std::mt19937_64 random(9);
+    std::uniform_real_distribution<double> spread(7.0, 7.001);
+    std::vector<double> depth(20000);
+    for (double& d : depth) d = spread(random);
+    for (std::size_t i = 0; i < depth.size(); i += 7) depth[i] = depth[i / 2];
+    CHECK(farthest_first_order(depth) == reference_order(depth));
+}
