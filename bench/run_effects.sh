@@ -20,10 +20,15 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DPHONGRAST_WERROR=ON -DPHONGR
   -DPHONGRAST_BUILD_TESTS=OFF -DPHONGRAST_BUILD_APPS=OFF -DPHONGRAST_BUILD_IO=ON -DPHONGRAST_INSTALL=OFF >/dev/null
 cmake --build "$build" -j2 --target bench_effects bench_effects_once
 
-# What was measured: the commit, and whether the library sources differed from it.
-revision="commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
-if [ -n "$(git status --porcelain -- src include 2>/dev/null)" ]; then
-  revision="$revision, plus uncommitted changes in src/ or include/ (shared working tree)"
+# What was measured: the commit, and whether the library sources differed from
+# it (REVISION overrides, e.g. for a `git archive` export that has no .git).
+if [ -n "${REVISION:-}" ]; then
+  revision=$REVISION
+else
+  revision="commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  if [ -n "$(git status --porcelain -- src include 2>/dev/null)" ]; then
+    revision="$revision, plus uncommitted changes in src/ or include/ (shared working tree)"
+  fi
 fi
 load_before=$(uptime)
 start=$(date -u +%Y-%m-%dT%H:%M:%SZ)
