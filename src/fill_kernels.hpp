@@ -22,14 +22,23 @@
 
 namespace phongrast::detail {
 
+/// One triangle ready to fill: 140 bytes in float. The varyings are not
+/// copied: they stay in the mesh's vertex array (or, for the corners clipping
+/// creates, in the draw list's own storage), and the triangle points to them.
 template <typename Real>
 struct DrawTriangle {
     CoverageTriangle coverage;
-    Varyings<Real> v[3];  ///< in coverage order
-    Real depth[3];
-    Real inverse_depth[3];
-    Vec3<Real> centroid;  ///< camera space, of the source triangle (seed light vectors)
+    const Varyings<Real>* v[3];  ///< in coverage order
+    Vec3<Real> lit[3];           ///< Gouraud: the lit corner colours; flat: the triangle's colour, thrice
+    Real depth[3];               ///< z_c of the corners
+    Vec3<Real> centroid;         ///< camera space, of the source triangle (seed light vectors)
 };
+
+/// 1 / depth of each corner, for perspective-correct weights.
+template <typename Real>
+void inverse_depths(const DrawTriangle<Real>& draw, Real* inverse) {
+    for (int i = 0; i < 3; ++i) inverse[i] = Real(1) / draw.depth[i];
+}
 
 /// The rows of the image one task fills, and what it counts.
 template <typename Real>
@@ -61,6 +70,8 @@ using FillKernel = void (*)(const DrawTriangle<Real>&, FillTarget<Real>&, LightV
 template <typename Real, bool Perspective, typename Shade>
 void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shade&& shade) {
     const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2);
+    Real inverse_depth[3] = {Real(1), Real(1), Real(1)};
+    if constexpr (Perspective) inverse_depths(draw, inverse_depth);
     Image& image = target.image;
     for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
                           [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {
@@ -70,8 +81,8 @@ void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shad
             q[i] = static_cast<Real>(e[i]) * inverse_area;
             dq[i] = static_cast<Real>(step[i]) * inverse_area;
             if constexpr (Perspective) {
-                q[i] *= draw.inverse_depth[i];
-                dq[i] *= draw.inverse_depth[i];
+                q[i] *= inverse_depth[i];
+                dq[i] *= inverse_depth[i];
             }
         }
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns);
@@ -112,13 +123,7 @@ void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shad
 
 template <typename Real>
 Vec3<Real> interpolate_lit(const DrawTriangle<Real>& d, const Real* w) {
-    return w[0] * d.v[0].lit + w[1] * d.v[1].lit + w[2] * d.v[2].lit;
-}
-
-template <typename Real>
-Vec3<Real> surface_color(const DrawTriangle<Real>& d, const Real* w, const FillSetup<Real>& setup,
-                         bool uniform) {
-    return uniform ? setup.color : w[0] * d.v[0].color + w[1] * d.v[1].color + w[2] * d.v[2].color;
+    return w[0] * d.lit[0] + w[1] * d.lit[1] + w[2] * d.lit[2];
 }
 
 /// Gouraud: the colour was lit per vertex; interpolate it.
@@ -134,7 +139,7 @@ void fill_lit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVec
 template <typename Real, bool Perspective>
 void fill_flat(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
                const FillSetup<Real>&) {
-    fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.v[0].lit; });
+    fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
 }
 
 /// Phong shades up to kSampleBatch samples of a span at a time, structure of
@@ -223,7 +228,7 @@ void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>*
         if (UniformColor) {
             for (int l = 0; l < n; ++l) color[c][l] = setup.color[c];
         } else {
-            interpolate_lanes(n, w, draw.v[0].color[c], draw.v[1].color[c], draw.v[2].color[c], color[c]);
+            interpolate_lanes(n, w, draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], color[c]);
         }
         for (int l = 0; l < n; ++l) out[c][l] = Real(0);
         if (terms.ambient()) {
@@ -235,12 +240,12 @@ void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>*
 
     Lanes<Real> normal[3], point[3], eye[3] = {};
     for (int c = 0; c < 3; ++c) {
-        interpolate_lanes(n, w, draw.v[0].normal[c], draw.v[1].normal[c], draw.v[2].normal[c], normal[c]);
+        interpolate_lanes(n, w, draw.v[0]->normal[c], draw.v[1]->normal[c], draw.v[2]->normal[c], normal[c]);
     }
     normalize_lanes(n, normal[0], normal[1], normal[2]);
     if (PerSampleVectors) {
         for (int c = 0; c < 3; ++c) {
-            interpolate_lanes(n, w, draw.v[0].position[c], draw.v[1].position[c], draw.v[2].position[c], point[c]);
+            interpolate_lanes(n, w, draw.v[0]->position[c], draw.v[1]->position[c], draw.v[2]->position[c], point[c]);
         }
         if (terms.specular()) {
             for (int c = 0; c < 3; ++c) {
@@ -313,6 +318,8 @@ void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>*
 template <typename Real, bool Perspective, typename ShadeBatch>
 void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& target, ShadeBatch&& shade_batch) {
     const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2);
+    Real inverse_depth[3] = {Real(1), Real(1), Real(1)};
+    if constexpr (Perspective) inverse_depths(draw, inverse_depth);
     Image& image = target.image;
     Lanes<Real> w[3], depth, out[3];
     std::size_t index[kSampleBatch];
@@ -362,8 +369,8 @@ void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& targe
             q[i] = static_cast<Real>(e[i]) * inverse_area;
             dq[i] = static_cast<Real>(step[i]) * inverse_area;
             if constexpr (Perspective) {
-                q[i] *= draw.inverse_depth[i];
-                dq[i] *= draw.inverse_depth[i];
+                q[i] *= inverse_depth[i];
+                dq[i] *= inverse_depth[i];
             }
         }
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns) +

@@ -87,9 +87,18 @@ inline std::int64_t last_at_most(std::int64_t limit, std::int64_t step) {
     return k;
 }
 
+/// A snapped point stored in half the space: |coordinates| <= 2^28 fit 32 bits.
+struct CompactPoint {
+    std::int32_t x = 0, y = 0;
+    CompactPoint() = default;
+    CompactPoint(const SnappedPoint& p) : x(static_cast<std::int32_t>(p.x)), y(static_cast<std::int32_t>(p.y)) {}
+    operator SnappedPoint() const { return {x, y}; }
+};
+
 /// A triangle ready for coverage: vertices ordered so that area2 > 0.
+/// Kept small: the renderer stores one per drawn triangle.
 struct CoverageTriangle {
-    SnappedPoint v[3];
+    CompactPoint v[3];
     std::int64_t area2 = 0;               ///< E_01(v2) = twice the area in (1/256 px)^2
     bool swapped = false;                 ///< true if input vertices 1 and 2 were exchanged
     int row_min = 0, row_max = -1;        ///< pixel rows whose centres may be covered
@@ -151,8 +160,8 @@ void for_each_covered_span(const CoverageTriangle& t, int row_begin, int row_end
     std::int64_t at_origin[3], step_column[3], step_row[3], threshold[3];
     for (int i = 0; i < 3; ++i) {
         // Edge opposite vertex i runs from vertex i+1 to vertex i+2.
-        const SnappedPoint& a = t.v[(i + 1) % 3];
-        const SnappedPoint& b = t.v[(i + 2) % 3];
+        const SnappedPoint a = t.v[(i + 1) % 3];
+        const SnappedPoint b = t.v[(i + 2) % 3];
         const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
         const bool top = (dy == 0 && dx > 0);
         const bool left = (dy < 0);

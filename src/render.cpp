@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -70,6 +71,8 @@ void validate_scene_values(const Scene& scene) {
 template <typename Real>
 struct DrawList {
     std::vector<std::vector<DrawTriangle<Real>>> chunks;
+    /// Corners created by clipping, which draw triangles point to (a deque never moves its elements).
+    std::vector<std::deque<Varyings<Real>>> clip_vertices;
     std::vector<const DrawTriangle<Real>*> ordered;
 };
 
@@ -241,13 +244,14 @@ private:
         // same whatever the number of threads.
         const std::size_t chunks = (order.size() + kSetupChunk - 1) / kSetupChunk;
         std::vector<std::vector<DrawTriangle<Real>>> chunk_draws(chunks);
+        std::vector<std::deque<Varyings<Real>>> chunk_clip_vertices(chunks);
         std::vector<SetupCounts> chunk_counts(chunks);
         tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
             const std::size_t begin = chunk * kSetupChunk;
             const std::size_t end = std::min(order.size(), begin + kSetupChunk);
             chunk_draws[chunk].reserve(end - begin);
             for (std::size_t k = begin; k < end; ++k) {
-                set_up_triangle(order[k], chunk_draws[chunk], chunk_counts[chunk]);
+                set_up_triangle(order[k], chunk_draws[chunk], chunk_clip_vertices[chunk], chunk_counts[chunk]);
             }
         });
         DrawList<Real> draws;
@@ -265,6 +269,7 @@ private:
             count_point_evaluations(chunk_counts[chunk].lit_points, stats);
         }
         draws.chunks = std::move(chunk_draws);  // moving a vector keeps its elements' addresses
+        draws.clip_vertices = std::move(chunk_clip_vertices);
         return draws;
     }
 
@@ -282,7 +287,7 @@ private:
     }
 
     void set_up_triangle(std::uint32_t source, std::vector<DrawTriangle<Real>>& out,
-                         SetupCounts& counts) const {
+                         std::deque<Varyings<Real>>& clip_vertices, SetupCounts& counts) const {
         const Triangle& tri = scene_.mesh.triangles[source];
         if (hidden_back_faces_ != HiddenBackFaces::unknown && faces_away(tri)) {
             ++counts.culled;
@@ -326,6 +331,7 @@ private:
 
         const std::size_t first_draw = out.size();
         bool any_area = false, any_drawn = false;
+        const Varyings<Real>* stored[8] = {};  // the polygon's corners, stored once the first piece is drawn
         for (std::size_t k = 1; k + 1 < polygon.count; ++k) {
             const ClipVertex<Real>* corner[3] = {&polygon.vertices[0], &polygon.vertices[k],
                                                  &polygon.vertices[k + 1]};
@@ -335,11 +341,21 @@ private:
             const SnappedPoint c = snap(corner[2]->column, corner[2]->row);
             if (edge_value(a, b, c.x, c.y) != 0) any_area = true;
             if (!setup_coverage(a, b, c, frame_.rows, frame_.columns, draw.coverage)) continue;
-            if (draw.coverage.swapped) std::swap(corner[1], corner[2]);
+            if (!any_drawn) {
+                for (std::size_t i = 0; i < polygon.count; ++i) {
+                    clip_vertices.push_back(polygon.vertices[i].varyings);
+                    stored[i] = &clip_vertices.back();
+                }
+            }
+            std::size_t corner_index[3] = {0, k, k + 1};
+            if (draw.coverage.swapped) {
+                std::swap(corner[1], corner[2]);
+                std::swap(corner_index[1], corner_index[2]);
+            }
             for (int i = 0; i < 3; ++i) {
-                draw.v[i] = corner[i]->varyings;
+                draw.v[i] = stored[corner_index[i]];
+                draw.lit[i] = corner[i]->varyings.lit;
                 draw.depth[i] = static_cast<Real>(corner[i]->depth);
-                draw.inverse_depth[i] = Real(1) / draw.depth[i];
             }
             draw.centroid = centroid;
             out.push_back(draw);
@@ -352,7 +368,7 @@ private:
             const Vec3<Real> lit = flat_color(tri, centroid);
             ++counts.lit_points;
             for (std::size_t d = first_draw; d < out.size(); ++d) {
-                for (Varyings<Real>& v : out[d].v) v.lit = lit;
+                for (Vec3<Real>& corner_lit : out[d].lit) corner_lit = lit;
             }
         }
         if (any_drawn) {
@@ -383,18 +399,21 @@ private:
         std::uint32_t index[3] = {tri[0], tri[1], tri[2]};
         if (draw.coverage.swapped) std::swap(index[1], index[2]);
         for (int i = 0; i < 3; ++i) {
-            draw.v[i] = varyings_[index[i]];
+            draw.v[i] = &varyings_[index[i]];
+            draw.lit[i] = varyings_[index[i]].lit;
             draw.depth[i] = static_cast<Real>(camera_depth_[index[i]]);
-            draw.inverse_depth[i] = Real(1) / draw.depth[i];
         }
         draw.centroid = centroid;
         if (scene_.shader == Shader::flat) {
             const Vec3<Real> lit = flat_color(tri, centroid);
-            for (Varyings<Real>& v : draw.v) v.lit = lit;
+            for (Vec3<Real>& corner_lit : draw.lit) corner_lit = lit;
             ++counts.lit_points;
         } else if (scene_.shader == Shader::gouraud) {
-            Varyings<Real>* corners[3] = {&draw.v[0], &draw.v[1], &draw.v[2]};
+            // Lit copies of the corners: light_corners() writes their `lit`, the mesh's vertices stay as they are.
+            Varyings<Real> copies[3] = {*draw.v[0], *draw.v[1], *draw.v[2]};
+            Varyings<Real>* corners[3] = {&copies[0], &copies[1], &copies[2]};
             counts.lit_points += light_corners(corners, centroid);
+            for (int i = 0; i < 3; ++i) draw.lit[i] = copies[i].lit;
         }
         out.push_back(draw);
         ++counts.drawn;
