@@ -1,0 +1,92 @@
+// Issue 8: how phongrast's render time grows with the triangle count and with
+// the image size, Gouraud and Phong, 1 and 2 threads (RenderOptions::exact()).
+//
+// Two sweeps over the llvmpipe comparison's dented, coloured icosphere
+// (bench/llvmpipe/scenes.cpp, three lights):
+//   * triangles: 20 f^2 triangles for f = 7 .. 447 (980 .. 3,996,180) at 1024 x 1024;
+//   * pixels:    the 15,680-triangle sphere at 256^2 .. 4096^2.
+// Each benchmark reports the counters `triangles` and `samples` (samples shaded)
+// so bench/scaling_slopes.py can fit time against both on log-log axes.
+//
+// Usage: bench_scaling [--quick] [Google Benchmark flags]
+//   --quick: a subset that runs in about a minute (up to 256k triangles and 2048^2).
+#include <benchmark/benchmark.h>
+
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "phongrast/render.hpp"
+#include "scenes.hpp"
+
+namespace {
+
+/// Scenes are generated once per (frequency, rows) and kept for every benchmark that uses them.
+const phongrast::Scene& cached_scene(int frequency, int rows) {
+    static std::map<std::pair<int, int>, std::unique_ptr<llvmpipe_compare::NamedScene>> cache;
+    auto& slot = cache[{frequency, rows}];
+    if (!slot) {
+        slot = std::make_unique<llvmpipe_compare::NamedScene>(
+            llvmpipe_compare::icosphere_scene("icosphere", frequency, rows));
+    }
+    return slot->scene;
+}
+
+void render_case(benchmark::State& state, int frequency, int rows, phongrast::Shader shader, int threads) {
+    phongrast::Scene scene = cached_scene(frequency, rows);  // a copy: the shader differs per case
+    scene.shader = shader;
+    phongrast::RenderOptions options = phongrast::RenderOptions::exact();
+    options.threads = threads;
+    phongrast::RenderStats stats;
+    for (auto _ : state) {
+        phongrast::RenderResult result = phongrast::render(scene, options);
+        stats = result.stats;
+        benchmark::DoNotOptimize(result.image.pixels.data());
+    }
+    state.counters["triangles"] = static_cast<double>(scene.mesh.triangles.size());
+    state.counters["samples"] = static_cast<double>(stats.samples_shaded);
+    state.counters["pixels"] = static_cast<double>(rows) * rows;
+}
+
+void register_case(const std::string& sweep, int frequency, int rows, phongrast::Shader shader, int threads) {
+    const std::string name = sweep + "/" + phongrast::to_string(shader) + "/threads:" + std::to_string(threads) +
+                             "/triangles:" + std::to_string(20 * frequency * frequency) +
+                             "/rows:" + std::to_string(rows);
+    benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
+        render_case(state, frequency, rows, shader, threads);
+    })->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(0.2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bool quick = false;
+    std::vector<char*> arguments;
+    for (int i = 0; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--quick") == 0) {
+            quick = true;
+        } else {
+            arguments.push_back(argv[i]);
+        }
+    }
+    // 20 f^2 triangles: 980, 3,920, 15,680, 64,980, 255,380, 1,003,520, 3,996,180.
+    const std::vector<int> frequencies =
+        quick ? std::vector<int>{7, 28, 113} : std::vector<int>{7, 14, 28, 57, 113, 224, 447};
+    const std::vector<int> sides = quick ? std::vector<int>{256, 512, 1024, 2048}
+                                         : std::vector<int>{256, 512, 1024, 2048, 4096};
+    for (phongrast::Shader shader : {phongrast::Shader::gouraud, phongrast::Shader::phong}) {
+        for (int threads : {1, 2}) {
+            for (int frequency : frequencies) register_case("triangles", frequency, 1024, shader, threads);
+            for (int rows : sides) register_case("pixels", 28, rows, shader, threads);
+        }
+    }
+    int count = static_cast<int>(arguments.size());
+    benchmark::Initialize(&count, arguments.data());
+    if (benchmark::ReportUnrecognizedArguments(count, arguments.data())) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
