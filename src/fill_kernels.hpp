@@ -217,10 +217,11 @@ inline void power_lanes(int n, const Lanes<Real>& x, Real exponent, Lanes<Real>&
 }
 
 /// Shades the n samples whose weights are w into out (three channels).
-template <typename Real, bool PerSampleVectors, bool UniformColor, typename Terms>
+template <typename Real, bool PerSampleVectors, bool UniformColor, int FixedCount, typename Terms>
 void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
                        const std::vector<CameraLight<Real>>& lights, const LightVectorsAt<Real>& vectors,
                        const FillSetup<Real>& setup, Lanes<Real>* out) {
+    if constexpr (FixedCount > 0) n = FixedCount;  // a constant trip count: straight scalar code
     const LightRig<Real>& rig = *setup.rig;
     const bool normals = terms.diffuse() || terms.specular();
     Lanes<Real> color[3];
@@ -307,6 +308,28 @@ void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>*
                 for (int c = 0; c < 3; ++c) out[c][l] += lit ? intensity_ks[c] * highlight[l] : Real(0);
             }
         }
+    }
+}
+
+/// shade_phong_batch() for n samples. Below one vector's worth (tiny triangles
+/// of large meshes) the samples go one at a time through the single-lane
+/// instantiation, whose loops compile to plain scalar code: the vector loops'
+/// set-up would cost more than the work. Same operations either way.
+template <typename Real, bool PerSampleVectors, bool UniformColor, typename Terms>
+void shade_phong_samples(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
+                         const std::vector<CameraLight<Real>>& lights, const LightVectorsAt<Real>& vectors,
+                         const FillSetup<Real>& setup, Lanes<Real>* out) {
+    constexpr int kVectorWidth = 16 / sizeof(Real);  // SSE2
+    if (n >= kVectorWidth) {
+        shade_phong_batch<Real, PerSampleVectors, UniformColor, 0>(draw, n, w, terms, lights, vectors, setup, out);
+        return;
+    }
+    for (int l = 0; l < n; ++l) {
+        Lanes<Real> one_w[3], one_out[3];
+        for (int i = 0; i < 3; ++i) one_w[i][0] = w[i][l];
+        shade_phong_batch<Real, PerSampleVectors, UniformColor, 1>(draw, 1, one_w, terms, lights, vectors, setup,
+                                                                   one_out);
+        for (int c = 0; c < 3; ++c) out[c][l] = one_out[c][0];
     }
 }
 
@@ -397,7 +420,7 @@ void fill_phong(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightV
     if constexpr (kNormals && !PerSampleVectors) vectors.compute(rig.active_lights, draw.centroid, Specular);
     const FixedTerms<Ambient, Diffuse, Specular> terms;
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
-        shade_phong_batch<Real, PerSampleVectors, UniformColor>(draw, n, w, terms, rig.active_lights, vectors, setup,
+        shade_phong_samples<Real, PerSampleVectors, UniformColor>(draw, n, w, terms, rig.active_lights, vectors, setup,
                                                                 out);
     });
 }
@@ -411,9 +434,9 @@ void fill_phong_general(const DrawTriangle<Real>& draw, FillTarget<Real>& target
     const SelectedTerms terms{rig.lighting};
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
         if (setup.uniform_color) {
-            shade_phong_batch<Real, PerSampleVectors, true>(draw, n, w, terms, rig.lights, vectors, setup, out);
+            shade_phong_samples<Real, PerSampleVectors, true>(draw, n, w, terms, rig.lights, vectors, setup, out);
         } else {
-            shade_phong_batch<Real, PerSampleVectors, false>(draw, n, w, terms, rig.lights, vectors, setup, out);
+            shade_phong_samples<Real, PerSampleVectors, false>(draw, n, w, terms, rig.lights, vectors, setup, out);
         }
     });
 }
