@@ -71,8 +71,9 @@ class Runs:
         wanted.update({k: str(v) for k, v in fields.items()})
         if "lights" in wanted:
             return self.runs.get(tuple(sorted(wanted.items())))
-        # The effect and culling tables: two generated lights, or a scene file's own.
-        for lights in ("2", "scene"):
+        # The effect and culling tables: a scene file's own lights when the mesh
+        # has them (its lights=2 runs belong to the light sweep), else two generated ones.
+        for lights in ("scene", "2"):
             wanted["lights"] = lights
             run = self.runs.get(tuple(sorted(wanted.items())))
             if run:
