@@ -6,6 +6,11 @@
 // significant digit radix sort of the keys mapped to unsigned integers costs
 // a few sequential passes and is stable by construction, so it gives exactly
 // std::stable_sort's order (with -0 taken as +0, as `>` does).
+//
+// Each pass runs in parallel over fixed blocks of the array: every block
+// counts its digits, the blocks' slices of every bucket are laid out block
+// after block, and each block scatters into its own slices in order. The
+// result does not depend on the number of threads.
 #ifndef PHONGRAST_SRC_DEPTH_SORT_HPP
 #define PHONGRAST_SRC_DEPTH_SORT_HPP
 
@@ -15,6 +20,8 @@
 #include <cstring>
 #include <numeric>
 #include <vector>
+
+#include <tbb/parallel_for.h>
 
 namespace phongrast::detail {
 
@@ -34,8 +41,8 @@ inline std::uint64_t farthest_first_key(double depth) {
 inline std::vector<std::uint32_t> farthest_first_order(const std::vector<double>& depth) {
     const std::size_t n = depth.size();
     std::vector<std::uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
     if (n < 256) {
+        std::iota(order.begin(), order.end(), 0u);
         std::stable_sort(order.begin(), order.end(), [&depth](std::uint32_t a, std::uint32_t b) {
             return depth[a] > depth[b];
         });
@@ -44,33 +51,71 @@ inline std::vector<std::uint32_t> farthest_first_order(const std::vector<double>
     constexpr int kDigitBits = 11;
     constexpr int kPasses = (64 + kDigitBits - 1) / kDigitBits;
     constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
+    constexpr std::size_t kBlock = std::size_t(1) << 16;
+    using Counts = std::array<std::uint32_t, kBuckets>;
+    const std::size_t blocks = (n + kBlock - 1) / kBlock;
+    const auto block_range = [n](std::size_t block) {
+        return std::pair<std::size_t, std::size_t>(block * kBlock, std::min(n, (block + 1) * kBlock));
+    };
+
     std::vector<std::uint64_t> keys(n), keys_scratch(n);
     std::vector<std::uint32_t> order_scratch(n);
-    std::vector<std::array<std::uint32_t, kBuckets>> counts(kPasses);
-    for (auto& c : counts) c.fill(0);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint64_t key = farthest_first_key(depth[i]);
-        keys[i] = key;
-        for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(key >> (pass * kDigitBits)) & (kBuckets - 1)];
-    }
+    // The first pass over the depths makes the keys and every pass's digit
+    // counts per block; a digit every key shares leaves the order as it is.
+    std::vector<std::array<Counts, kPasses>> first_counts(blocks);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+        std::array<Counts, kPasses>& counts = first_counts[block];
+        for (Counts& c : counts) c.fill(0);
+        const auto [begin, end] = block_range(block);
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::uint64_t key = farthest_first_key(depth[i]);
+            keys[i] = key;
+            order[i] = static_cast<std::uint32_t>(i);
+            for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(key >> (pass * kDigitBits)) & (kBuckets - 1)];
+        }
+    });
+
+    std::vector<Counts> block_counts(blocks);
+    bool first_pass_done = false;
     for (int pass = 0; pass < kPasses; ++pass) {
-        std::array<std::uint32_t, kBuckets>& count = counts[pass];
-        // A digit every key shares leaves the order as it is: skip the pass.
-        if (std::any_of(count.begin(), count.end(), [n](std::uint32_t c) { return c == n; })) continue;
-        std::uint32_t start = 0;
-        for (std::uint32_t& c : count) {
-            const std::uint32_t bucket_size = c;
-            c = start;
-            start += bucket_size;
-        }
         const int shift = pass * kDigitBits;
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::uint32_t slot = count[(keys[i] >> shift) & (kBuckets - 1)]++;
-            keys_scratch[slot] = keys[i];
-            order_scratch[slot] = order[i];
+        Counts total{};
+        for (std::size_t block = 0; block < blocks; ++block) {
+            for (std::size_t b = 0; b < kBuckets; ++b) total[b] += first_counts[block][pass][b];
         }
+        if (std::any_of(total.begin(), total.end(), [n](std::uint32_t c) { return c == n; })) continue;
+        // The keys' blocks moved in earlier passes: count this pass's digits afresh.
+        if (first_pass_done) {
+            tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+                Counts& c = block_counts[block];
+                c.fill(0);
+                const auto [begin, end] = block_range(block);
+                for (std::size_t i = begin; i < end; ++i) ++c[(keys[i] >> shift) & (kBuckets - 1)];
+            });
+        } else {
+            for (std::size_t block = 0; block < blocks; ++block) block_counts[block] = first_counts[block][pass];
+        }
+        // Bucket-major offsets: bucket b's slice, block after block.
+        std::uint32_t start = 0;
+        for (std::size_t b = 0; b < kBuckets; ++b) {
+            for (std::size_t block = 0; block < blocks; ++block) {
+                const std::uint32_t size = block_counts[block][b];
+                block_counts[block][b] = start;
+                start += size;
+            }
+        }
+        tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+            Counts& cursor = block_counts[block];
+            const auto [begin, end] = block_range(block);
+            for (std::size_t i = begin; i < end; ++i) {
+                const std::uint32_t slot = cursor[(keys[i] >> shift) & (kBuckets - 1)]++;
+                keys_scratch[slot] = keys[i];
+                order_scratch[slot] = order[i];
+            }
+        });
         keys.swap(keys_scratch);
         order.swap(order_scratch);
+        first_pass_done = true;
     }
     return order;
 }

@@ -84,14 +84,12 @@ void validate_scene_values(const Scene& scene) {
     validate_mesh(scene.mesh);
 }
 
-/// The set-up triangles in painter's order, without copying them out of the
-/// per-chunk vectors they were built in.
+/// The set-up triangles in painter's order: chunk after chunk, each in order.
 template <typename Real>
 struct DrawList {
     std::vector<std::vector<DrawTriangle<Real>>> chunks;
     /// Corners created by clipping, which draw triangles point to (a deque never moves its elements).
     std::vector<std::deque<Varyings<Real>>> clip_vertices;
-    std::vector<const DrawTriangle<Real>*> ordered;
 };
 
 struct SetupCounts {
@@ -249,10 +247,13 @@ private:
     std::vector<std::uint32_t> painter_order() const {
         const std::vector<Triangle>& triangles = scene_.mesh.triangles;
         std::vector<double> depth(triangles.size());
-        for (std::size_t t = 0; t < triangles.size(); ++t) {
-            const Triangle& tri = triangles[t];
-            depth[t] = (camera_depth_[tri[0]] + camera_depth_[tri[1]] + camera_depth_[tri[2]]) / 3.0;
-        }
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), 16384),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t t = range.begin(); t != range.end(); ++t) {
+                const Triangle& tri = triangles[t];
+                depth[t] = (camera_depth_[tri[0]] + camera_depth_[tri[1]] + camera_depth_[tri[2]]) / 3.0;
+            }
+        });
         return farthest_first_order(depth);
     }
 
@@ -274,11 +275,7 @@ private:
             }
         });
         DrawList<Real> draws;
-        std::size_t total = 0;
-        for (const auto& d : chunk_draws) total += d.size();
-        draws.ordered.reserve(total);
         for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-            for (const DrawTriangle<Real>& draw : chunk_draws[chunk]) draws.ordered.push_back(&draw);
             stats.triangles_degenerate += chunk_counts[chunk].degenerate;
             stats.triangles_dropped += chunk_counts[chunk].dropped;
             stats.triangles_clipped += chunk_counts[chunk].clipped;
@@ -547,7 +544,6 @@ private:
 
     // ---- Fill ---------------------------------------------------------------------
     Image fill(const DrawList<Real>& list, RenderStats& stats) const {
-        const std::vector<const DrawTriangle<Real>*>& draws = list.ordered;
         Image image(frame_.rows, frame_.columns, scene_.image.background);
         const bool depth_test = options_.visibility == Visibility::depth_buffer;
         std::vector<Real> depth_buffer(depth_test ? image.pixels.size() : 0,
@@ -555,24 +551,44 @@ private:
         const int bands = (frame_.rows + kBandRows - 1) / kBandRows;
         std::vector<std::uint64_t> shaded(bands, 0), replaced(bands, 0);
 
-        // Bin the draws by band, keeping painter's order within each band.
-        std::vector<std::uint32_t> band_start(static_cast<std::size_t>(bands) + 1, 0);
-        for (const DrawTriangle<Real>* draw : draws) {
-            for (int band = draw->coverage.row_min / kBandRows; band <= draw->coverage.row_max / kBandRows; ++band) {
-                ++band_start[static_cast<std::size_t>(band) + 1];
+        // Bin the draws by band, keeping painter's order within each band:
+        // counted and scattered in parallel over the setup chunks (which are
+        // in painter's order), each chunk writing its own slice of every band.
+        const std::size_t chunks = list.chunks.size();
+        std::vector<std::uint32_t> chunk_band_count(chunks * static_cast<std::size_t>(bands), 0);
+        const auto for_each_band = [](const DrawTriangle<Real>& draw, auto&& visit) {
+            for (int band = draw.coverage.row_min / kBandRows; band <= draw.coverage.row_max / kBandRows; ++band) {
+                visit(static_cast<std::size_t>(band));
             }
-        }
-        for (int band = 0; band < bands; ++band) band_start[band + 1] += band_start[band];
-        std::vector<std::uint32_t> binned(band_start[bands]);
+        };
+        tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+            std::uint32_t* count = &chunk_band_count[chunk * static_cast<std::size_t>(bands)];
+            for (const DrawTriangle<Real>& draw : list.chunks[chunk]) {
+                for_each_band(draw, [&](std::size_t band) { ++count[band]; });
+            }
+        });
+        // Band-major offsets: band b's slice starts at band_start[b]; within it, chunk after chunk.
+        std::vector<std::uint32_t> band_start(static_cast<std::size_t>(bands) + 1, 0);
+        std::vector<std::uint32_t> chunk_band_cursor(chunk_band_count.size());
         {
-            std::vector<std::uint32_t> cursor(band_start.begin(), band_start.end() - 1);
-            for (std::size_t d = 0; d < draws.size(); ++d) {
-                const CoverageTriangle& c = draws[d]->coverage;
-                for (int band = c.row_min / kBandRows; band <= c.row_max / kBandRows; ++band) {
-                    binned[cursor[band]++] = static_cast<std::uint32_t>(d);
+            std::uint32_t total = 0;
+            for (int band = 0; band < bands; ++band) {
+                band_start[band] = total;
+                for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+                    const std::size_t slot = chunk * static_cast<std::size_t>(bands) + static_cast<std::size_t>(band);
+                    chunk_band_cursor[slot] = total;
+                    total += chunk_band_count[slot];
                 }
             }
+            band_start[bands] = total;
         }
+        std::vector<const DrawTriangle<Real>*> binned(band_start[bands]);
+        tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+            std::uint32_t* cursor = &chunk_band_cursor[chunk * static_cast<std::size_t>(bands)];
+            for (const DrawTriangle<Real>& draw : list.chunks[chunk]) {
+                for_each_band(draw, [&](std::size_t band) { binned[cursor[band]++] = &draw; });
+            }
+        });
 
         tbb::parallel_for(0, bands, [&](int band) {
             FillTarget<Real> target{image, depth_buffer, band * kBandRows,
@@ -580,8 +596,8 @@ private:
             LightVectorsAt<Real> vectors;
             const std::uint32_t end = band_start[band + 1];
             for (std::uint32_t i = band_start[band]; i < end; ++i) {
-                if (i + kPrefetchAhead < end) prefetch_object(draws[binned[i + kPrefetchAhead]]);
-                kernel_(*draws[binned[i]], target, vectors, fill_setup_);
+                if (i + kPrefetchAhead < end) prefetch_object(binned[i + kPrefetchAhead]);
+                kernel_(*binned[i], target, vectors, fill_setup_);
             }
             shaded[band] = target.samples;
             replaced[band] = target.replaced;
