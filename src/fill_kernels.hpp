@@ -425,6 +425,30 @@ void fill_phong(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightV
     });
 }
 
+/// Phong with neither diffuse nor specular needs no normal and no light: per
+/// sample it is the ambient term of the interpolated colour, which costs what
+/// Gouraud's interpolation costs. It goes sample by sample through
+/// fill_samples, skipping the batches' gathering, with shade_phong_batch's
+/// operations in the same order (0 + factor * colour, colour interpolated as
+/// (w0 a + w1 b) + w2 c), so the image is the general kernel's bit for bit.
+template <typename Real, bool Perspective, bool Ambient, bool UniformColor>
+void fill_phong_unlit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+                      const FillSetup<Real>& setup) {
+    const Vec3<Real> factor = setup.rig->ambient_factor;
+    fill_samples<Real, Perspective>(draw, target, [&](const Real* w) {
+        Vec3<Real> out(Real(0));
+        if constexpr (Ambient) {
+            for (int c = 0; c < 3; ++c) {
+                const Real color = UniformColor ? setup.color[c]
+                                                : (w[0] * draw.v[0]->color[c] + w[1] * draw.v[1]->color[c]) +
+                                                      w[2] * draw.v[2]->color[c];
+                out[c] += factor[c] * color;
+            }
+        }
+        return out;
+    });
+}
+
 /// Phong as a straightforward implementation writes it: every term checked per batch, every light.
 template <typename Real, bool Perspective, bool PerSampleVectors>
 void fill_phong_general(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
@@ -456,8 +480,8 @@ template <typename Real, bool Perspective, bool Ambient, bool Diffuse, bool Spec
 FillKernel<Real> pick_phong_vectors_color(const KernelChoice& c) {
     if (!Diffuse && !Specular) {
         // No normals and no light vectors: only the colour varies.
-        return c.uniform_color ? &fill_phong<Real, Perspective, Ambient, false, false, false, true>
-                               : &fill_phong<Real, Perspective, Ambient, false, false, false, false>;
+        return c.uniform_color ? &fill_phong_unlit<Real, Perspective, Ambient, true>
+                               : &fill_phong_unlit<Real, Perspective, Ambient, false>;
     }
     if (c.per_sample_vectors) {
         return c.uniform_color ? &fill_phong<Real, Perspective, Ambient, Diffuse, Specular, true, true>
