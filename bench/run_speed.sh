@@ -2,7 +2,8 @@
 # Issue 8 speed measurements, before and after, in one run:
 #   bench/run_speed.sh [--baseline COMMIT] [--repeat K] [--no-large] [--callgrind] [--scaling | --scaling-quick]
 #
-# Builds bench_speed_once from the working tree in build/speed. With
+# Builds bench_speed_once from the working tree in build/speed-bench (or
+# $BUILD_DIR; tests off there, so use a folder of its own). With
 # --baseline, also builds the renderer of COMMIT (exported with `git archive`
 # into build/speed-baseline, with today's bench_speed_once driver copied in)
 # and times both binaries alternately on the same scenes, so that the machine's
@@ -34,9 +35,10 @@ configure() {  # source dir, build dir
   cmake -S "$1" -B "$2" -DCMAKE_BUILD_TYPE=Release -DPHONGRAST_WERROR=ON -DPHONGRAST_BUILD_BENCH=ON \
     -DPHONGRAST_BUILD_TESTS=OFF >/dev/null
 }
-configure "$ROOT" build/speed
-cmake --build build/speed --target bench_speed_once bench_scaling -j2 >/dev/null
-CURRENT=build/speed/bench/bench_speed_once
+BUILD=${BUILD_DIR:-build/speed-bench}
+configure "$ROOT" "$BUILD"
+cmake --build "$BUILD" --target bench_speed_once bench_scaling -j2 >/dev/null
+CURRENT=$BUILD/bench/bench_speed_once
 
 BEFORE=""
 if [ -n "$BASELINE" ]; then
@@ -119,6 +121,6 @@ if [ -n "$SCALING" ]; then
   echo
   flag=""
   [ "$SCALING" = quick ] && flag=--quick
-  build/speed/bench/bench_scaling $flag --benchmark_out=build/speed/scaling.json --benchmark_out_format=json >/dev/null
-  python3 bench/scaling_slopes.py build/speed/scaling.json
+  "$BUILD/bench/bench_scaling" $flag --benchmark_out="$BUILD/scaling.json" --benchmark_out_format=json >/dev/null
+  python3 bench/scaling_slopes.py "$BUILD/scaling.json"
 fi
