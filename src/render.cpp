@@ -35,6 +35,9 @@ namespace {
 /// it removes is visible only within 1e-4 of the sensor's half-size around
 /// the image centre.
 constexpr double kNearPlaneOverFocal = 1e-4;
+/// Projected coordinates up to this size are clipped exactly (differences of
+/// two of them stay finite); beyond it only overflow can have produced them.
+constexpr double kMaxClippableProjection = 1e306;
 constexpr int kBandRows = 16;
 constexpr std::size_t kSetupChunk = 4096;
 /// How many triangles ahead the setup and the fill ask for the memory they will read.
@@ -502,6 +505,18 @@ private:
                 });
             polygon = scratch;
             if (polygon.count < 3) return false;
+        }
+
+        // A corner that cannot be represented -- NaN or infinite because a
+        // coordinate near the top of the double range (or beyond float's, in a
+        // float render) overflowed on the way here -- cannot be clipped
+        // meaningfully: the triangle is skipped (counted outside) rather than
+        // fed to the fixed-point snapping, where it would overflow.
+        for (std::size_t i = 0; i < polygon.count; ++i) {
+            const ClipVertex<Real>& v = polygon.vertices[i];
+            if (!(std::abs(v.column) <= kMaxClippableProjection && std::abs(v.row) <= kMaxClippableProjection)) {
+                return false;
+            }
         }
 
         const double lo = -kGuardBandPixels;
