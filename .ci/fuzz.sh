@@ -3,12 +3,19 @@
 # UndefinedBehaviorSanitizer in build/fuzz, and runs each for a bounded time
 # from its seed corpus in fuzz/corpus/<target>/. A crash leaves its input in
 # build/fuzz/findings/ and makes this script fail; turn it into a regression
-# test (a fixture in tests/fuzz_regressions/ and a Catch2 case).
-#   FUZZ_SECONDS: run time per target (default 60).
+# test (tests/test_fuzz_regressions.cpp, and the input into fuzz/corpus/).
+# The runs are reproducible: a fixed seed, a fixed number of inputs and a
+# scratch corpus emptied first, so the same commit fuzzes the same inputs in
+# CI as on a developer's machine (a time limit would make CI pass or fail
+# depending on the machine's speed).
+#   FUZZ_RUNS: inputs per target (default 200000); FUZZ_SEED (default 1);
+#   FUZZ_SECONDS: a safety cap on the time per target (default 600).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-seconds="${FUZZ_SECONDS:-60}"
+runs="${FUZZ_RUNS:-200000}"
+seed="${FUZZ_SEED:-1}"
+seconds="${FUZZ_SECONDS:-600}"
 build=build/fuzz
 sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 
@@ -23,10 +30,11 @@ for target in fuzz_obj fuzz_scene; do
   name="${target#fuzz_}"
   # New inputs go to a scratch corpus so the repository's seeds stay as they are.
   work="$build/corpus/$name"
+  rm -rf "$work"
   mkdir -p "$work"
-  echo "== $target: ${seconds}s from fuzz/corpus/$name"
+  echo "== $target: $runs inputs (seed $seed) from fuzz/corpus/$name"
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    "$build/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
+    "$build/fuzz/$target" -seed="$seed" -runs="$runs" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
     -max_len=4096 -print_final_stats=1 -artifact_prefix="$build/findings/$name-" \
     "$work" "fuzz/corpus/$name"
 done
