@@ -51,6 +51,36 @@ struct FillTarget {
     std::uint64_t replaced;
 };
 
+/// The interpolation weights q at a span's first sample and their step dq per
+/// column, from the exact edge values e and steps: screen-space weights,
+/// divided by each vertex's depth when perspective-correct.
+template <typename Real, bool Perspective>
+inline void span_weights(const std::int64_t* e, const std::int64_t* step, Real inverse_area,
+                         const Real* inverse_depth, Real* q, Real* dq) {
+    for (int i = 0; i < 3; ++i) {
+        q[i] = static_cast<Real>(e[i]) * inverse_area;
+        dq[i] = static_cast<Real>(step[i]) * inverse_area;
+        if constexpr (Perspective) {
+            q[i] *= inverse_depth[i];
+            dq[i] *= inverse_depth[i];
+        }
+    }
+}
+
+/// The last guard before a pixel is written: every input was validated
+/// finite, so this should never fire; if it does, the channel becomes 0 and
+/// is counted (RenderStats::nonfinite_values_replaced), never written as NaN.
+inline glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_t& replaced) {
+    if (std::isfinite(pixel.x + pixel.y + pixel.z)) return pixel;
+    for (int channel = 0; channel < 3; ++channel) {
+        if (!std::isfinite(pixel[channel])) {
+            pixel[channel] = 0.0f;
+            ++replaced;
+        }
+    }
+    return pixel;
+}
+
 /// Per-render constants the kernels read.
 template <typename Real>
 struct FillSetup {
@@ -75,16 +105,8 @@ void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shad
     Image& image = target.image;
     for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
                           [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {
-        // q: screen-space weights, divided by depth when perspective-correct.
         Real q[3], dq[3];
-        for (int i = 0; i < 3; ++i) {
-            q[i] = static_cast<Real>(e[i]) * inverse_area;
-            dq[i] = static_cast<Real>(step[i]) * inverse_area;
-            if constexpr (Perspective) {
-                q[i] *= inverse_depth[i];
-                dq[i] *= inverse_depth[i];
-            }
-        }
+        span_weights<Real, Perspective>(e, step, inverse_area, inverse_depth, q, dq);
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns);
         std::uint64_t written = 0;
         for (int k = 0; k < count; ++k) {
@@ -104,17 +126,7 @@ void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shad
                 if (!(depth <= target.depth_buffer[index])) continue;
                 target.depth_buffer[index] = depth;
             }
-            glm::vec3 out(shade(w));
-            if (!std::isfinite(out.x + out.y + out.z)) {
-                // Last guard: every input was validated finite, so this should never fire.
-                for (int channel = 0; channel < 3; ++channel) {
-                    if (!std::isfinite(out[channel])) {
-                        out[channel] = 0.0f;
-                        ++target.replaced;
-                    }
-                }
-            }
-            image.pixels[index] = out;
+            image.pixels[index] = finite_or_replaced(glm::vec3(shade(w)), target.replaced);
             ++written;
         }
         target.samples += written;
@@ -368,34 +380,17 @@ void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& targe
                 if (!(depth[l] <= target.depth_buffer[index[l]])) continue;
                 target.depth_buffer[index[l]] = depth[l];
             }
-            glm::vec3 pixel(static_cast<float>(out[0][l]), static_cast<float>(out[1][l]),
-                            static_cast<float>(out[2][l]));
-            if (!std::isfinite(pixel.x + pixel.y + pixel.z)) {
-                // Last guard: every input was validated finite, so this should never fire.
-                for (int channel = 0; channel < 3; ++channel) {
-                    if (!std::isfinite(pixel[channel])) {
-                        pixel[channel] = 0.0f;
-                        ++target.replaced;
-                    }
-                }
-            }
-            image.pixels[index[l]] = pixel;
+            const glm::vec3 pixel(static_cast<float>(out[0][l]), static_cast<float>(out[1][l]),
+                                  static_cast<float>(out[2][l]));
+            image.pixels[index[l]] = finite_or_replaced(pixel, target.replaced);
             ++target.samples;
         }
         n = 0;
     };
     for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
                           [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {
-        // q: screen-space weights, divided by depth when perspective-correct.
         Real q[3], dq[3];
-        for (int i = 0; i < 3; ++i) {
-            q[i] = static_cast<Real>(e[i]) * inverse_area;
-            dq[i] = static_cast<Real>(step[i]) * inverse_area;
-            if constexpr (Perspective) {
-                q[i] *= inverse_depth[i];
-                dq[i] *= inverse_depth[i];
-            }
-        }
+        span_weights<Real, Perspective>(e, step, inverse_area, inverse_depth, q, dq);
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns) +
                                       static_cast<std::size_t>(first_column);
         for (int k = 0; k < count; ++k) {
