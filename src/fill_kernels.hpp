@@ -47,9 +47,45 @@ struct FillTarget {
     std::vector<Real>& depth_buffer;
     int row_begin, row_end;
     bool depth_test;
-    std::uint64_t samples;
-    std::uint64_t replaced;
+    std::uint64_t samples;   ///< samples shaded and written
+    std::uint64_t replaced;  ///< non-finite channels replaced by 0
+    std::uint64_t covered = 0;  ///< samples inside the triangles filled, shaded or not
+    /// Overdraw::shade_visible: for each sample of rows [row_begin, row_end)
+    /// (row-major, image.columns wide), the number of the last triangle of
+    /// the band covering it; a kernel shades only the samples whose owner is
+    /// `self`. Null: shade every covered sample.
+    const std::uint32_t* owner = nullptr;
+    std::uint32_t self = 0;
 };
+
+/// No triangle covers the sample (Overdraw::shade_visible's owner buffer).
+constexpr std::uint32_t kNoOwner = 0xffffffffu;
+
+/// Pass one of Overdraw::shade_visible: writes `number` as the owner of every
+/// sample the triangle covers in the target's rows, so that after the band's
+/// triangles have gone through in painter's order each sample names the one
+/// that paints it last. Returns the number of samples covered.
+template <typename Real>
+std::uint64_t record_owner(const DrawTriangle<Real>& draw, const FillTarget<Real>& target, std::uint32_t number,
+                           std::uint32_t* owner) {
+    std::uint64_t covered = 0;
+    const std::size_t columns = static_cast<std::size_t>(target.image.columns);
+    for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
+                          [&](int row, int first_column, int count, const std::int64_t*, const std::int64_t*) {
+        std::uint32_t* start = owner + static_cast<std::size_t>(row - target.row_begin) * columns +
+                               static_cast<std::size_t>(first_column);
+        std::fill(start, start + count, number);
+        covered += static_cast<std::uint64_t>(count);
+    });
+    return covered;
+}
+
+/// The owner row of `row` when the target shades only its own samples, else null.
+template <typename Real>
+const std::uint32_t* owner_row(const FillTarget<Real>& target, int row) {
+    if (target.owner == nullptr) return nullptr;
+    return target.owner + static_cast<std::size_t>(row - target.row_begin) * static_cast<std::size_t>(target.image.columns);
+}
 
 /// The interpolation weights q at a span's first sample and their step dq per
 /// column, from the exact edge values e and steps: screen-space weights,
@@ -108,8 +144,12 @@ void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shad
         Real q[3], dq[3];
         span_weights<Real, Perspective>(e, step, inverse_area, inverse_depth, q, dq);
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns);
+        const std::uint32_t* owners = owner_row(target, row);
+        target.covered += static_cast<std::uint64_t>(count);
         std::uint64_t written = 0;
         for (int k = 0; k < count; ++k) {
+            // Painted over later: skipped. The weights below depend on k only, not on what was skipped.
+            if (owners != nullptr && owners[first_column + k] != target.self) continue;
             Real w[3] = {q[0] + dq[0] * static_cast<Real>(k), q[1] + dq[1] * static_cast<Real>(k),
                          q[2] + dq[2] * static_cast<Real>(k)};
             Real depth;
@@ -393,7 +433,12 @@ void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& targe
         span_weights<Real, Perspective>(e, step, inverse_area, inverse_depth, q, dq);
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns) +
                                       static_cast<std::size_t>(first_column);
+        const std::uint32_t* owners = owner_row(target, row);
+        if (owners != nullptr) owners += first_column;
+        target.covered += static_cast<std::uint64_t>(count);
         for (int k = 0; k < count; ++k) {
+            // Painted over later: skipped. A sample's weights depend on k only, not on the batch it joins.
+            if (owners != nullptr && owners[k] != target.self) continue;
             const Real step_count = static_cast<Real>(k);
             w[0][n] = q[0] + dq[0] * step_count;
             w[1][n] = q[1] + dq[1] * step_count;

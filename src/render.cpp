@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -42,6 +43,12 @@ constexpr int kBandRows = 16;
 constexpr std::size_t kSetupChunk = 4096;
 /// How many triangles ahead the setup and the fill ask for the memory they will read.
 constexpr std::size_t kPrefetchAhead = 8;
+
+/// Overdraw::shade_visible's scratch, one per worker thread, reused from band to band.
+struct VisibleLayer {
+    std::vector<std::uint32_t> owner;  ///< per sample of the band: its last triangle, or kNoOwner
+    std::vector<std::uint8_t> shown;   ///< per triangle of the band: owns at least one sample
+};
 
 /// A hint to start loading *address into the cache (no effect on results).
 inline void prefetch_address(const void* address) {
@@ -605,24 +612,62 @@ private:
             }
         });
 
+        std::vector<std::uint64_t> covered(bands, 0);
+        const bool shade_visible = options_.overdraw == Overdraw::shade_visible && !depth_test &&
+                                   scene_.shader != Shader::flat;
+        tbb::enumerable_thread_specific<VisibleLayer> layers;
         tbb::parallel_for(0, bands, [&](int band) {
             FillTarget<Real> target{image, depth_buffer, band * kBandRows,
                                     std::min(frame_.rows, (band + 1) * kBandRows), depth_test, 0, 0};
+            const DrawTriangle<Real>* const* draws = binned.data() + band_start[band];
+            const std::uint32_t count = band_start[band + 1] - band_start[band];
             LightVectorsAt<Real> vectors;
-            const std::uint32_t end = band_start[band + 1];
-            for (std::uint32_t i = band_start[band]; i < end; ++i) {
-                if (i + kPrefetchAhead < end) prefetch_object(binned[i + kPrefetchAhead]);
-                kernel_(*binned[i], target, vectors, fill_setup_);
+            if (shade_visible) {
+                fill_visible_layer(draws, count, target, vectors, layers.local(), covered[band]);
+            } else {
+                for (std::uint32_t i = 0; i < count; ++i) {
+                    if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
+                    kernel_(*draws[i], target, vectors, fill_setup_);
+                }
+                covered[band] = target.covered;
             }
             shaded[band] = target.samples;
             replaced[band] = target.replaced;
         });
         for (int band = 0; band < bands; ++band) {
+            stats.samples_covered += covered[band];
             stats.samples_shaded += shaded[band];
             stats.nonfinite_values_replaced += replaced[band];
         }
         count_sample_evaluations(stats.samples_shaded, stats);
         return image;
+    }
+
+    /// Overdraw::shade_visible for one band: pass one records which of the
+    /// band's triangles paints each sample last (painter's order: the last
+    /// one to cover it); pass two shades, in the same order, only the
+    /// triangles that own a sample, and of each only the samples it owns.
+    /// Every sample gets the colour the classic fill leaves there, computed
+    /// by the same kernel from the same weights, once.
+    void fill_visible_layer(const DrawTriangle<Real>* const* draws, std::uint32_t count, FillTarget<Real>& target,
+                            LightVectorsAt<Real>& vectors, VisibleLayer& layer, std::uint64_t& covered) const {
+        const std::size_t samples = static_cast<std::size_t>(target.row_end - target.row_begin) *
+                                    static_cast<std::size_t>(frame_.columns);
+        layer.owner.assign(samples, kNoOwner);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
+            covered += record_owner(*draws[i], target, i, layer.owner.data());
+        }
+        layer.shown.assign(count, 0);
+        for (const std::uint32_t owner : layer.owner) {
+            if (owner != kNoOwner) layer.shown[owner] = 1;
+        }
+        target.owner = layer.owner.data();
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (!layer.shown[i]) continue;  // entirely painted over: no shading at all
+            target.self = i;
+            kernel_(*draws[i], target, vectors, fill_setup_);
+        }
     }
 
     // Per-sample term counts follow from the kernel chosen: it evaluates exactly these.
@@ -668,6 +713,7 @@ glm::dvec2 rotated_grid_offset(int i, int j, int s) {
 
 // Adds one pass's sample work to the total; triangle counts come from the first pass.
 void add_pass_stats(const RenderStats& pass, RenderStats& total) {
+    total.samples_covered += pass.samples_covered;
     total.samples_shaded += pass.samples_shaded;
     total.nonfinite_values_replaced += pass.nonfinite_values_replaced;
     total.ambient_evaluations += pass.ambient_evaluations;

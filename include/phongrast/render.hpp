@@ -47,6 +47,17 @@ enum class Visibility {
     painter,       ///< contract: farthest mean depth first, later triangles overwrite
     depth_buffer,  ///< per-sample nearest depth wins (not part of the contract; for comparison)
 };
+/// What painter's order spends on samples that a later triangle paints over.
+/// Either way the image is the same bit for bit: a sample's colour depends
+/// only on the triangle that paints it last.
+enum class Overdraw {
+    shade_all,      ///< the classic painter's fill: every triangle shades every sample it covers
+    shade_visible,  ///< per band of rows, first record which triangle paints each sample last
+                    ///< (coverage only), then shade just those samples. Applies to painter's
+                    ///< order with Gouraud and Phong; flat shading writes one colour, which
+                    ///< costs less than the extra pass, and the depth buffer shades as it tests.
+};
+
 enum class Precision { single_float, double_float };
 /// Where the samples_per_axis^2 samples of a pixel lie (box-filtered either way).
 enum class SamplePattern {
@@ -66,6 +77,8 @@ struct RenderOptions {
     Interpolation interpolation = Interpolation::perspective_correct;
     BorderPolicy border = BorderPolicy::clip;
     Visibility visibility = Visibility::painter;
+    /// Not a simplification (the image does not change): on in both presets.
+    Overdraw overdraw = Overdraw::shade_visible;
     Precision precision = Precision::single_float;
     /// Samples per pixel = samples_per_axis^2, box-filtered. 1 = centre only.
     int samples_per_axis = 1;
@@ -126,7 +139,9 @@ struct RenderStats {
     std::uint64_t triangles_clipped = 0;     ///< crossed the image border or the near plane and were clipped
     std::uint64_t triangles_outside = 0;     ///< entirely outside the view: nothing to draw
     std::uint64_t triangles_drawn = 0;       ///< reached the fill (possibly as several clipped pieces)
-    std::uint64_t samples_shaded = 0;        ///< samples written (a sample is a pixel when samples_per_axis = 1)
+    std::uint64_t samples_covered = 0;       ///< samples inside drawn triangles, overdraw included (a sample is a pixel when samples_per_axis = 1)
+    std::uint64_t samples_shaded = 0;        ///< samples shaded and written: samples_covered with Overdraw::shade_all
+                                             ///< (depth buffer: those passing the test); the visible ones with shade_visible
     std::uint64_t nonfinite_values_replaced = 0;  ///< should stay 0: a last guard, counted so tests see it
     /// Evaluations of each lighting term: one per light per shaded point
     /// (vertex for Gouraud, sample for Phong, triangle for flat); ambient one per point.

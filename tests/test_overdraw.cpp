@@ -1,0 +1,162 @@
+// Overdraw::shade_visible (shade only the samples a triangle paints last)
+// against Overdraw::shade_all (the classic painter's fill): the same image bit
+// for bit, the same coverage, and fewer samples shaded wherever triangles
+// overlap.
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "phongrast/render.hpp"
+#include "test_meshes.hpp"
+
+using namespace phongrast;
+
+namespace {
+
+/// No lit colour of these scenes lands exactly on it, so a pixel equal to it was never written.
+const glm::vec3 kBackground{0.3141f, 0.2718f, 0.1618f};
+
+bool same_bits(const Image& a, const Image& b) {
+    return a.pixels.size() == b.pixels.size() &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
+}
+
+std::uint64_t count_written(const Image& image) {
+    std::uint64_t written = 0;
+    for (const glm::vec3& p : image.pixels) written += p != kBackground;
+    return written;
+}
+
+/// A torus (its inner back faces show through in painter's order) plus a
+/// soup of random coloured triangles crossing it and each other, some
+/// reaching past the image border and behind the eye.
+Scene random_scene(std::uint32_t seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> coordinate(-1.6, 1.6);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    Scene scene;
+    scene.mesh = test_meshes::torus(24, 12, 1.0, 0.35);
+    for (int t = 0; t < 40; ++t) {
+        const auto first = static_cast<std::uint32_t>(scene.mesh.positions.size());
+        for (int k = 0; k < 3; ++k) scene.mesh.positions.push_back({coordinate(random), coordinate(random), coordinate(random)});
+        scene.mesh.triangles.push_back({first, first + 1, first + 2});
+    }
+    for (std::size_t v = 0; v < scene.mesh.positions.size(); ++v) {
+        scene.mesh.colors.push_back({unit(random), unit(random), unit(random)});
+    }
+    scene.camera.eye = {coordinate(random), 1.5 + unit(random), 3.0 + unit(random)};
+    scene.camera.focal = 1.2;
+    scene.image = {61 + static_cast<int>(seed % 7) * 9, 47 + static_cast<int>(seed % 5) * 11, kBackground};
+    scene.material = {glm::vec3(0.1f), glm::vec3(0.7f), glm::vec3(0.5f), 16.0f};
+    scene.lights = {{{2.0, 2.0, 2.0}, {1.0f, 0.9f, 0.8f}}, {{-2.0, 1.0, 0.5}, {0.3f, 0.4f, 0.9f}}};
+    return scene;
+}
+
+RenderOptions with_overdraw(RenderOptions options, Overdraw overdraw) {
+    options.overdraw = overdraw;
+    return options;
+}
+
+}  // namespace
+
+TEST_CASE("shade_visible paints the same image as shade_all, bit for bit, in every mode") {
+    for (std::uint32_t seed = 1; seed <= 6; ++seed) {
+        Scene scene = random_scene(seed);
+        for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+            scene.shader = shader;
+            for (bool seed_mode : {false, true}) {
+                for (Precision precision : {Precision::single_float, Precision::double_float}) {
+                    for (bool specialize : {true, false}) {
+                        RenderOptions options = seed_mode ? RenderOptions::seed() : RenderOptions::exact();
+                        options.precision = precision;
+                        options.specialize_effects = specialize;
+                        options.threads = 1 + static_cast<int>(seed % 2);
+                        const RenderResult all = render(scene, with_overdraw(options, Overdraw::shade_all));
+                        const RenderResult visible = render(scene, with_overdraw(options, Overdraw::shade_visible));
+                        INFO("seed " << seed << ", " << to_string(shader) << (seed_mode ? ", seed mode" : ", exact")
+                                     << (precision == Precision::double_float ? ", double" : ", float")
+                                     << (specialize ? ", specialised" : ", general"));
+                        CHECK(same_bits(all.image, visible.image));
+                        CHECK(all.stats.samples_covered == visible.stats.samples_covered);
+                        CHECK(all.stats.samples_shaded == all.stats.samples_covered);
+                        if (shader == Shader::flat) {
+                            CHECK(visible.stats.samples_shaded == visible.stats.samples_covered);
+                        } else {
+                            // Each written pixel shaded exactly once; the torus overlaps itself.
+                            CHECK(visible.stats.samples_shaded == count_written(visible.image));
+                            CHECK(visible.stats.samples_shaded < all.stats.samples_shaded);
+                        }
+                        CHECK(visible.stats.nonfinite_values_replaced == 0);
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("shade_visible with supersampling and partial lighting: the same image as shade_all") {
+    Scene scene = random_scene(42);
+    scene.shader = Shader::phong;
+    for (SamplePattern pattern : {SamplePattern::ordered_grid, SamplePattern::rotated_grid}) {
+        for (Lighting lighting : {Lighting::full(), Lighting{true, false, false}, Lighting{false, false, true}}) {
+            scene.lighting = lighting;
+            RenderOptions options = RenderOptions::exact();
+            options.samples_per_axis = 2;
+            options.sample_pattern = pattern;
+            const RenderResult all = render(scene, with_overdraw(options, Overdraw::shade_all));
+            const RenderResult visible = render(scene, with_overdraw(options, Overdraw::shade_visible));
+            INFO(to_string(lighting) << (pattern == SamplePattern::rotated_grid ? ", rotated grid" : ", ordered grid"));
+            CHECK(same_bits(all.image, visible.image));
+            CHECK(visible.stats.samples_covered == all.stats.samples_covered);
+            CHECK(visible.stats.samples_shaded < all.stats.samples_shaded);
+            // Term counts follow the samples shaded.
+            CHECK(visible.stats.ambient_evaluations <= all.stats.ambient_evaluations);
+            CHECK(visible.stats.specular_evaluations <= all.stats.specular_evaluations);
+        }
+    }
+}
+
+TEST_CASE("with a depth buffer the overdraw setting changes nothing: the buffer shades as it tests") {
+    Scene scene = random_scene(7);
+    scene.shader = Shader::phong;
+    RenderOptions options = RenderOptions::exact();
+    options.visibility = Visibility::depth_buffer;
+    const RenderResult all = render(scene, with_overdraw(options, Overdraw::shade_all));
+    const RenderResult visible = render(scene, with_overdraw(options, Overdraw::shade_visible));
+    CHECK(same_bits(all.image, visible.image));
+    CHECK(all.stats.samples_shaded == visible.stats.samples_shaded);
+    CHECK(all.stats.samples_covered == visible.stats.samples_covered);
+    CHECK(all.stats.samples_shaded <= all.stats.samples_covered);
+}
+
+TEST_CASE("shade_visible: a triangle painted over entirely costs no shading, and equal depths keep mesh order") {
+    // Two identical squares at the same depth: painter's order keeps mesh
+    // order, so the second (red) one is the picture and the only one shaded.
+    Scene scene;
+    scene.image = {32, 32, kBackground};
+    scene.camera.eye = {0, 0, 2};
+    scene.camera.focal = 2;
+    for (int copy = 0; copy < 2; ++copy) {
+        const auto first = static_cast<std::uint32_t>(scene.mesh.positions.size());
+        scene.mesh.positions.insert(scene.mesh.positions.end(), {{-0.3, -0.3, 0}, {0.3, -0.3, 0}, {0.3, 0.3, 0}, {-0.3, 0.3, 0}});
+        const glm::vec3 color = copy == 0 ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+        scene.mesh.colors.insert(scene.mesh.colors.end(), 4, color);
+        scene.mesh.triangles.push_back({first, first + 1, first + 2});
+        scene.mesh.triangles.push_back({first, first + 2, first + 3});
+    }
+    scene.lights = {{{0, 0, 3}, {1, 1, 1}}};
+    scene.material.ks = glm::vec3(0.0f);  // no white highlight: the blue channel tells the squares apart
+    scene.shader = Shader::phong;
+    const RenderResult all = render(scene, with_overdraw(RenderOptions::exact(), Overdraw::shade_all));
+    const RenderResult visible = render(scene, RenderOptions::exact());
+    REQUIRE(visible.stats.samples_covered > 100);
+    CHECK(same_bits(all.image, visible.image));
+    CHECK(all.stats.samples_shaded == visible.stats.samples_covered);
+    CHECK(visible.stats.samples_shaded * 2 == visible.stats.samples_covered);
+    const glm::vec3 centre = visible.image.at(16, 16);
+    CHECK(centre.x > 0.0f);
+    CHECK(centre.z == 0.0f);  // red, not blue
+}
