@@ -17,6 +17,8 @@ struct SceneFlags {
     std::string shader;
     std::string lighting;
     std::string mode = "exact";
+    std::string visibility = "painter";
+    std::string overdraw = "auto";
     std::string size;  ///< "WxH"
     std::vector<double> eye, lookat, up, sensor;
     double focal = 0.0;

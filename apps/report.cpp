@@ -37,14 +37,16 @@ std::string summary_line(const RenderStats& stats, double seconds) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer,
                   "%llu triangles in, %llu drawn, %llu dropped, %llu clipped, %llu culled, %llu outside the view, "
-                  "%llu degenerate; render %.2f ms",
+                  "%llu degenerate; %llu samples covered, %llu shaded; render %.2f ms",
                   static_cast<unsigned long long>(stats.triangles_in),
                   static_cast<unsigned long long>(stats.triangles_drawn),
                   static_cast<unsigned long long>(stats.triangles_dropped),
                   static_cast<unsigned long long>(stats.triangles_clipped),
                   static_cast<unsigned long long>(stats.triangles_culled),
                   static_cast<unsigned long long>(stats.triangles_outside),
-                  static_cast<unsigned long long>(stats.triangles_degenerate), seconds * 1e3);
+                  static_cast<unsigned long long>(stats.triangles_degenerate),
+                  static_cast<unsigned long long>(stats.samples_covered),
+                  static_cast<unsigned long long>(stats.samples_shaded), seconds * 1e3);
     return buffer;
 }
 
@@ -73,6 +75,10 @@ std::string stats_json(const Timing& timing, const RenderStats& stats, const Sce
                          {"lighting", to_string(scene.lighting)},
                          {"lights", scene.lights.size()},
                          {"mode", mode},
+                         {"visibility", options.visibility == Visibility::depth_buffer ? "depth-buffer" : "painter"},
+                         {"overdraw", options.overdraw == Overdraw::shade_all       ? "all"
+                                      : options.overdraw == Overdraw::shade_visible ? "visible"
+                                                                                    : "auto"},
                          {"threads", options.threads},
                          {"samples_per_axis", options.samples_per_axis}};
     document["stats"] = {{"triangles_in", stats.triangles_in},
@@ -82,6 +88,7 @@ std::string stats_json(const Timing& timing, const RenderStats& stats, const Sce
                          {"triangles_clipped", stats.triangles_clipped},
                          {"triangles_outside", stats.triangles_outside},
                          {"triangles_drawn", stats.triangles_drawn},
+                         {"samples_covered", stats.samples_covered},
                          {"samples_shaded", stats.samples_shaded},
                          {"nonfinite_values_replaced", stats.nonfinite_values_replaced},
                          {"ambient_evaluations", stats.ambient_evaluations},

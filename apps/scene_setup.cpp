@@ -153,6 +153,10 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
 
     prepared.options = flags.mode == "seed" ? RenderOptions::seed() : RenderOptions::exact();
     prepared.options.threads = flags.threads;
+    prepared.options.visibility = flags.visibility == "depth-buffer" ? Visibility::depth_buffer : Visibility::painter;
+    prepared.options.overdraw = flags.overdraw == "visible" ? Overdraw::shade_visible
+                                : flags.overdraw == "all"   ? Overdraw::shade_all
+                                                            : Overdraw::automatic;
     prepared.options.samples_per_axis = flags.samples;
 
     if (auto_framed && !messages.quiet()) {

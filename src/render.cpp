@@ -613,8 +613,7 @@ private:
         });
 
         std::vector<std::uint64_t> covered(bands, 0);
-        const bool shade_visible = options_.overdraw == Overdraw::shade_visible && !depth_test &&
-                                   scene_.shader != Shader::flat;
+        const bool shade_visible = !depth_test && overdraw_shades_visible_only();
         tbb::enumerable_thread_specific<VisibleLayer> layers;
         tbb::parallel_for(0, bands, [&](int band) {
             FillTarget<Real> target{image, depth_buffer, band * kBandRows,
@@ -641,6 +640,20 @@ private:
         }
         count_sample_evaluations(stats.samples_shaded, stats);
         return image;
+    }
+
+    /// Overdraw::automatic picks shade_visible only for per-sample lighting:
+    /// there shading a sample costs several times the second coverage pass,
+    /// while Gouraud's or flat's per-sample work (an interpolation, a store)
+    /// costs about what the pass does (docs/performance.md, "Overdraw").
+    bool overdraw_shades_visible_only() const {
+        switch (options_.overdraw) {
+            case Overdraw::shade_all: return false;
+            case Overdraw::shade_visible: return true;
+            case Overdraw::automatic: break;
+        }
+        // Decided by the scene alone, so the general kernel compares with the specialised ones like for like.
+        return scene_.shader == Shader::phong && effects_.normals;
     }
 
     /// Overdraw::shade_visible for one band: pass one records which of the

@@ -1,7 +1,7 @@
 // Overdraw::shade_visible (shade only the samples a triangle paints last)
 // against Overdraw::shade_all (the classic painter's fill): the same image bit
 // for bit, the same coverage, and fewer samples shaded wherever triangles
-// overlap.
+// overlap; Overdraw::automatic picks shade_visible for per-pixel lighting only.
 #include <cstdint>
 #include <cstring>
 #include <random>
@@ -82,13 +82,9 @@ TEST_CASE("shade_visible paints the same image as shade_all, bit for bit, in eve
                         CHECK(same_bits(all.image, visible.image));
                         CHECK(all.stats.samples_covered == visible.stats.samples_covered);
                         CHECK(all.stats.samples_shaded == all.stats.samples_covered);
-                        if (shader == Shader::flat) {
-                            CHECK(visible.stats.samples_shaded == visible.stats.samples_covered);
-                        } else {
-                            // Each written pixel shaded exactly once; the torus overlaps itself.
-                            CHECK(visible.stats.samples_shaded == count_written(visible.image));
-                            CHECK(visible.stats.samples_shaded < all.stats.samples_shaded);
-                        }
+                        // Each written pixel shaded exactly once; the torus overlaps itself.
+                        CHECK(visible.stats.samples_shaded == count_written(visible.image));
+                        CHECK(visible.stats.samples_shaded < all.stats.samples_shaded);
                         CHECK(visible.stats.nonfinite_values_replaced == 0);
                     }
                 }
@@ -151,7 +147,7 @@ TEST_CASE("shade_visible: a triangle painted over entirely costs no shading, and
     scene.material.ks = glm::vec3(0.0f);  // no white highlight: the blue channel tells the squares apart
     scene.shader = Shader::phong;
     const RenderResult all = render(scene, with_overdraw(RenderOptions::exact(), Overdraw::shade_all));
-    const RenderResult visible = render(scene, RenderOptions::exact());
+    const RenderResult visible = render(scene, with_overdraw(RenderOptions::exact(), Overdraw::shade_visible));
     REQUIRE(visible.stats.samples_covered > 100);
     CHECK(same_bits(all.image, visible.image));
     CHECK(all.stats.samples_shaded == visible.stats.samples_covered);
@@ -159,4 +155,35 @@ TEST_CASE("shade_visible: a triangle painted over entirely costs no shading, and
     const glm::vec3 centre = visible.image.at(16, 16);
     CHECK(centre.x > 0.0f);
     CHECK(centre.z == 0.0f);  // red, not blue
+}
+
+TEST_CASE("automatic overdraw: only Phong with diffuse or specular light shades the visible samples alone") {
+    Scene scene = random_scene(3);
+    struct Case {
+        Shader shader;
+        Lighting lighting;
+        bool visible_only;
+    };
+    for (const Case& c : {Case{Shader::phong, Lighting::full(), true}, Case{Shader::phong, Lighting::only_diffuse(), true},
+                          Case{Shader::phong, Lighting::only_specular(), true},
+                          Case{Shader::phong, Lighting::only_ambient(), false}, Case{Shader::gouraud, Lighting::full(), false},
+                          Case{Shader::flat, Lighting::full(), false}}) {
+        scene.shader = c.shader;
+        scene.lighting = c.lighting;
+        for (bool specialize : {true, false}) {
+            RenderOptions options = RenderOptions::exact();
+            options.specialize_effects = specialize;
+            REQUIRE(options.overdraw == Overdraw::automatic);
+            const RenderResult automatic = render(scene, options);
+            const RenderResult all = render(scene, with_overdraw(options, Overdraw::shade_all));
+            INFO(to_string(c.shader) << ", " << to_string(c.lighting) << (specialize ? ", specialised" : ", general"));
+            CHECK(same_bits(automatic.image, all.image));
+            if (c.visible_only) {
+                CHECK(automatic.stats.samples_shaded == count_written(automatic.image));
+                CHECK(automatic.stats.samples_shaded < automatic.stats.samples_covered);
+            } else {
+                CHECK(automatic.stats.samples_shaded == automatic.stats.samples_covered);
+            }
+        }
+    }
 }

@@ -48,15 +48,18 @@ enum class Visibility {
     depth_buffer,  ///< per-sample nearest depth wins (not part of the contract; for comparison)
 };
 /// What painter's order spends on samples that a later triangle paints over.
-/// Either way the image is the same bit for bit: a sample's colour depends
-/// only on the triangle that paints it last.
+/// Whichever is chosen, the image is the same bit for bit: a sample's colour
+/// depends only on the triangle that paints it last.
 enum class Overdraw {
     shade_all,      ///< the classic painter's fill: every triangle shades every sample it covers
     shade_visible,  ///< per band of rows, first record which triangle paints each sample last
-                    ///< (coverage only), then shade just those samples. Applies to painter's
-                    ///< order with Gouraud and Phong; flat shading writes one colour, which
-                    ///< costs less than the extra pass, and the depth buffer shades as it tests.
+                    ///< (coverage only), then shade just those samples: one shading per sample
+                    ///< for a second coverage pass
+    automatic,      ///< shade_visible where shading costs more than that second pass (Phong
+                    ///< with diffuse or specular light: measured in docs/performance.md),
+                    ///< shade_all elsewhere
 };
+/// The depth buffer (Visibility::depth_buffer) always shades as it tests: Overdraw applies to painter's order.
 
 enum class Precision { single_float, double_float };
 /// Where the samples_per_axis^2 samples of a pixel lie (box-filtered either way).
@@ -77,8 +80,8 @@ struct RenderOptions {
     Interpolation interpolation = Interpolation::perspective_correct;
     BorderPolicy border = BorderPolicy::clip;
     Visibility visibility = Visibility::painter;
-    /// Not a simplification (the image does not change): on in both presets.
-    Overdraw overdraw = Overdraw::shade_visible;
+    /// Not a simplification (the image does not change): the same in both presets.
+    Overdraw overdraw = Overdraw::automatic;
     Precision precision = Precision::single_float;
     /// Samples per pixel = samples_per_axis^2, box-filtered. 1 = centre only.
     int samples_per_axis = 1;

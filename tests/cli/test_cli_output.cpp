@@ -107,6 +107,34 @@ TEST_CASE("options mode seed and threads 1 give the library's seed render") {
     CHECK(io::read_image(folder.file("seed.exr")).pixels == render(file.scene, RenderOptions::seed()).image.pixels);
 }
 
+TEST_CASE("options visibility and overdraw reach the library; overdraw never changes the picture") {
+    TemporaryFolder folder;
+    io::SceneFile file = io::read_scene_file(data_folder + "/triangle.json");
+    file.scene.mesh = io::read_obj(file.mesh_path).mesh;
+    file.scene.material = io::resolve_material(file.material, std::nullopt, nullptr);
+    const std::vector<glm::vec3> expected = render(file.scene, RenderOptions::exact()).image.pixels;
+    for (const char* overdraw : {"all", "visible", "auto"}) {
+        const std::string name = std::string(overdraw) + ".exr";
+        const Run run = run_cli(folder, "render '" + data_folder + "/triangle.json' --overdraw " + overdraw +
+                                            " --stats-json " + overdraw + ".json -o " + name);
+        INFO(run.err);
+        REQUIRE(run.status == 0);
+        CHECK(io::read_image(folder.file(name)).pixels == expected);
+        const nlohmann::json stats = nlohmann::json::parse(read_text(folder.file(std::string(overdraw) + ".json")));
+        CHECK(stats["scene"]["overdraw"] == overdraw);
+        CHECK(stats["stats"]["samples_covered"].get<std::uint64_t>() >= stats["stats"]["samples_shaded"].get<std::uint64_t>());
+    }
+    const Run depth = run_cli(folder, "render '" + data_folder + "/triangle.json' --visibility depth-buffer -o depth.exr");
+    REQUIRE(depth.status == 0);
+    RenderOptions depth_buffer = RenderOptions::exact();
+    depth_buffer.visibility = Visibility::depth_buffer;
+    CHECK(io::read_image(folder.file("depth.exr")).pixels == render(file.scene, depth_buffer).image.pixels);
+    const Run bad = run_cli(folder, "render '" + data_folder + "/triangle.json' --overdraw some -o bad.png");
+    CHECK(bad.status != 0);
+    CHECK_THAT(bad.err, Catch::Matchers::Contains("--overdraw"));
+    CHECK_FALSE(std::ifstream(folder.file("bad.png")).good());
+}
+
 TEST_CASE("options repeat K and stats-json report K timed runs and the render statistics") {
     TemporaryFolder folder;
     const Run run = run_cli(folder, "render '" + data_folder + "/triangle.json' --repeat 3 --stats-json stats.json -o r.png");
