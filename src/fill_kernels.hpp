@@ -9,82 +9,32 @@
 #ifndef PHONGRAST_SRC_FILL_KERNELS_HPP
 #define PHONGRAST_SRC_FILL_KERNELS_HPP
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
 
-#include "clipping.hpp"
-#include "phongrast/image.hpp"
-#include "raster.hpp"
-#include "shading.hpp"
+#include "fill_types.hpp"
+
+// This header is compiled once per instruction set: the library's sources see
+// the baseline kernels; fill_kernels_avx2.cpp defines these two macros and
+// compiles it again for AVX2. Each compilation lives in its own namespace, so
+// no kernel of one instruction set can stand in for another's at link time.
+#ifndef PHONGRAST_FILL_ISA
+#define PHONGRAST_FILL_ISA baseline
+#endif
+#ifndef PHONGRAST_FILL_VECTOR_BYTES
+#define PHONGRAST_FILL_VECTOR_BYTES 16  // SSE2
+#endif
 
 namespace phongrast::detail {
-
-/// One triangle ready to fill: 140 bytes in float. The varyings are not
-/// copied: they stay in the mesh's vertex array (or, for the corners clipping
-/// creates, in the draw list's own storage), and the triangle points to them.
-template <typename Real>
-struct DrawTriangle {
-    CoverageTriangle coverage;
-    const Varyings<Real>* v[3];  ///< in coverage order
-    Vec3<Real> lit[3];           ///< Gouraud: the lit corner colours; flat: the triangle's colour, thrice
-    Real depth[3];               ///< z_c of the corners
-    Vec3<Real> centroid;         ///< camera space, of the source triangle (seed light vectors)
-};
+inline namespace PHONGRAST_FILL_ISA {
 
 /// 1 / depth of each corner, for perspective-correct weights.
 template <typename Real>
 void inverse_depths(const DrawTriangle<Real>& draw, Real* inverse) {
     for (int i = 0; i < 3; ++i) inverse[i] = Real(1) / draw.depth[i];
-}
-
-/// The rows of the image one task fills, and what it counts.
-template <typename Real>
-struct FillTarget {
-    Image& image;
-    std::vector<Real>& depth_buffer;
-    int row_begin, row_end;
-    bool depth_test;
-    std::uint64_t samples;   ///< samples shaded and written
-    std::uint64_t replaced;  ///< non-finite channels replaced by 0
-    std::uint64_t covered = 0;  ///< samples inside the triangles filled, shaded or not
-    /// Overdraw::shade_visible: for each sample of rows [row_begin, row_end)
-    /// (row-major, image.columns wide), the number of the last triangle of
-    /// the band covering it; a kernel shades only the samples whose owner is
-    /// `self`. Null: shade every covered sample.
-    const std::uint32_t* owner = nullptr;
-    std::uint32_t self = 0;
-};
-
-/// No triangle covers the sample (Overdraw::shade_visible's owner buffer).
-constexpr std::uint32_t kNoOwner = 0xffffffffu;
-
-/// Pass one of Overdraw::shade_visible: writes `number` as the owner of every
-/// sample the triangle covers in the target's rows, so that after the band's
-/// triangles have gone through in painter's order each sample names the one
-/// that paints it last. Returns the number of samples covered.
-template <typename Real>
-std::uint64_t record_owner(const DrawTriangle<Real>& draw, const FillTarget<Real>& target, std::uint32_t number,
-                           std::uint32_t* owner) {
-    std::uint64_t covered = 0;
-    const std::size_t columns = static_cast<std::size_t>(target.image.columns);
-    for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
-                          [&](int row, int first_column, int count, const std::int64_t*, const std::int64_t*) {
-        std::uint32_t* start = owner + static_cast<std::size_t>(row - target.row_begin) * columns +
-                               static_cast<std::size_t>(first_column);
-        std::fill(start, start + count, number);
-        covered += static_cast<std::uint64_t>(count);
-    });
-    return covered;
-}
-
-/// The owner row of `row` when the target shades only its own samples, else null.
-template <typename Real>
-const std::uint32_t* owner_row(const FillTarget<Real>& target, int row) {
-    if (target.owner == nullptr) return nullptr;
-    return target.owner + static_cast<std::size_t>(row - target.row_begin) * static_cast<std::size_t>(target.image.columns);
 }
 
 /// The interpolation weights q at a span's first sample and their step dq per
@@ -116,18 +66,6 @@ inline glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_t& replaced) {
     }
     return pixel;
 }
-
-/// Per-render constants the kernels read.
-template <typename Real>
-struct FillSetup {
-    const LightRig<Real>* rig = nullptr;
-    bool uniform_color = true;
-    Vec3<Real> color{Real(1)};  ///< the colour of every vertex when uniform_color
-};
-
-template <typename Real>
-using FillKernel = void (*)(const DrawTriangle<Real>&, FillTarget<Real>&, LightVectorsAt<Real>&,
-                            const FillSetup<Real>&);
 
 /// Visits the triangle's covered samples in the target's rows with
 /// interpolation weights w (summing to 1 up to rounding) and writes shade(w)
@@ -197,7 +135,7 @@ void fill_flat(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVe
 /// Phong shades up to kSampleBatch samples of a span at a time, structure of
 /// arrays: every step below is a loop over the n lanes with no call and no
 /// branch (selects only), which GCC vectorises (SSE2: 4 floats or 2 doubles per
-/// instruction, the remainder in scalar code with the same operations; check
+/// instruction, AVX2 twice as many; the remainder in scalar code with the same operations; check
 /// with -fopt-info-vec). A run-time trip count keeps GCC from unrolling the
 /// loops instead, and costs no lanes past the end of a span. Lane for lane it performs the scalar formula's
 /// operations in the same order (see shading.hpp), so the specialised and the
@@ -371,7 +309,7 @@ template <typename Real, bool PerSampleVectors, bool UniformColor, typename Term
 void shade_phong_samples(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
                          const std::vector<CameraLight<Real>>& lights, const LightVectorsAt<Real>& vectors,
                          const FillSetup<Real>& setup, Lanes<Real>* out) {
-    constexpr int kVectorWidth = 16 / sizeof(Real);  // SSE2
+    constexpr int kVectorWidth = PHONGRAST_FILL_VECTOR_BYTES / sizeof(Real);
     if (n >= kVectorWidth) {
         shade_phong_batch<Real, PerSampleVectors, UniformColor, 0>(draw, n, w, terms, lights, vectors, setup, out);
         return;
@@ -505,17 +443,6 @@ void fill_phong_general(const DrawTriangle<Real>& draw, FillTarget<Real>& target
     });
 }
 
-/// What decides the kernel.
-struct KernelChoice {
-    bool phong = false;
-    bool flat = false;
-    bool perspective = true;
-    bool specialized = true;
-    bool per_sample_vectors = true;
-    bool uniform_color = true;
-    EffectSet effects;
-};
-
 template <typename Real, bool Perspective, bool Ambient, bool Diffuse, bool Specular>
 FillKernel<Real> pick_phong_vectors_color(const KernelChoice& c) {
     if (!Diffuse && !Specular) {
@@ -559,6 +486,7 @@ FillKernel<Real> pick_kernel(const KernelChoice& c) {
     return c.perspective ? pick_kernel_for_projection<Real, true>(c) : pick_kernel_for_projection<Real, false>(c);
 }
 
+}  // namespace PHONGRAST_FILL_ISA
 }  // namespace phongrast::detail
 
 #endif  // PHONGRAST_SRC_FILL_KERNELS_HPP

@@ -21,7 +21,7 @@
 
 #include "clipping.hpp"
 #include "depth_sort.hpp"
-#include "fill_kernels.hpp"
+#include "fill_types.hpp"
 #include "phongrast/render.hpp"
 #include "raster.hpp"
 #include "scene_analysis.hpp"
@@ -223,7 +223,7 @@ private:
         choice.per_sample_vectors = options_.light_vectors == LightVectors::shaded_point;
         choice.uniform_color = fill_setup_.uniform_color;
         choice.effects = effects_;
-        kernel_ = pick_kernel<Real>(choice);
+        kernel_ = pick_fill_kernel<Real>(choice);
     }
 
     // Term counts for `points` lit outside the fill (vertices, corners, flat centroids).

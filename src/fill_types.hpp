@@ -1,0 +1,128 @@
+// What the fill kernels and the pipeline share (internal header): the set-up
+// triangle, the rows a task fills, the per-render constants, the kernel
+// signature and what chooses a kernel.
+//
+// Kept apart from fill_kernels.hpp, which is compiled once per instruction
+// set (see fill_kernels_avx2.cpp): these types and functions are compiled
+// for the baseline instruction set only, and every kernel, whatever its
+// instruction set, takes them.
+#ifndef PHONGRAST_SRC_FILL_TYPES_HPP
+#define PHONGRAST_SRC_FILL_TYPES_HPP
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "clipping.hpp"
+#include "phongrast/image.hpp"
+#include "raster.hpp"
+#include "shading.hpp"
+
+namespace phongrast::detail {
+
+/// One triangle ready to fill: 140 bytes in float. The varyings are not
+/// copied: they stay in the mesh's vertex array (or, for the corners clipping
+/// creates, in the draw list's own storage), and the triangle points to them.
+template <typename Real>
+struct DrawTriangle {
+    CoverageTriangle coverage;
+    const Varyings<Real>* v[3];  ///< in coverage order
+    Vec3<Real> lit[3];           ///< Gouraud: the lit corner colours; flat: the triangle's colour, thrice
+    Real depth[3];               ///< z_c of the corners
+    Vec3<Real> centroid;         ///< camera space, of the source triangle (seed light vectors)
+};
+
+/// The rows of the image one task fills, and what it counts.
+template <typename Real>
+struct FillTarget {
+    Image& image;
+    std::vector<Real>& depth_buffer;
+    int row_begin, row_end;
+    bool depth_test;
+    std::uint64_t samples;   ///< samples shaded and written
+    std::uint64_t replaced;  ///< non-finite channels replaced by 0
+    std::uint64_t covered = 0;  ///< samples inside the triangles filled, shaded or not
+    /// Overdraw::shade_visible: for each sample of rows [row_begin, row_end)
+    /// (row-major, image.columns wide), the number of the last triangle of
+    /// the band covering it; a kernel shades only the samples whose owner is
+    /// `self`. Null: shade every covered sample.
+    const std::uint32_t* owner = nullptr;
+    std::uint32_t self = 0;
+};
+
+/// No triangle covers the sample (Overdraw::shade_visible's owner buffer).
+constexpr std::uint32_t kNoOwner = 0xffffffffu;
+
+/// Pass one of Overdraw::shade_visible: writes `number` as the owner of every
+/// sample the triangle covers in the target's rows, so that after the band's
+/// triangles have gone through in painter's order each sample names the one
+/// that paints it last. Returns the number of samples covered.
+template <typename Real>
+std::uint64_t record_owner(const DrawTriangle<Real>& draw, const FillTarget<Real>& target, std::uint32_t number,
+                           std::uint32_t* owner) {
+    std::uint64_t covered = 0;
+    const std::size_t columns = static_cast<std::size_t>(target.image.columns);
+    for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
+                          [&](int row, int first_column, int count, const std::int64_t*, const std::int64_t*) {
+        std::uint32_t* start = owner + static_cast<std::size_t>(row - target.row_begin) * columns +
+                               static_cast<std::size_t>(first_column);
+        std::fill(start, start + count, number);
+        covered += static_cast<std::uint64_t>(count);
+    });
+    return covered;
+}
+
+/// The owner row of `row` when the target shades only its own samples, else null.
+template <typename Real>
+const std::uint32_t* owner_row(const FillTarget<Real>& target, int row) {
+    if (target.owner == nullptr) return nullptr;
+    return target.owner + static_cast<std::size_t>(row - target.row_begin) * static_cast<std::size_t>(target.image.columns);
+}
+
+/// Per-render constants the kernels read.
+template <typename Real>
+struct FillSetup {
+    const LightRig<Real>* rig = nullptr;
+    bool uniform_color = true;
+    Vec3<Real> color{Real(1)};  ///< the colour of every vertex when uniform_color
+};
+
+template <typename Real>
+using FillKernel = void (*)(const DrawTriangle<Real>&, FillTarget<Real>&, LightVectorsAt<Real>&,
+                            const FillSetup<Real>&);
+
+/// What decides the kernel.
+struct KernelChoice {
+    bool phong = false;
+    bool flat = false;
+    bool perspective = true;
+    bool specialized = true;
+    bool per_sample_vectors = true;
+    bool uniform_color = true;
+    EffectSet effects;
+};
+
+/// The kernel for `choice` compiled for the best instruction set this build
+/// and this CPU have (kernel_isa()). Every instruction set computes the same
+/// image bit for bit: the same IEEE operations in the same order, no fused
+/// multiply-add.
+template <typename Real>
+FillKernel<Real> pick_fill_kernel(const KernelChoice& choice);
+
+enum class KernelIsa {
+    baseline,  ///< the build's target (x86-64: SSE2, 4 floats per instruction)
+    avx2,      ///< AVX2: 8 floats per instruction (x86-64 GCC builds, on CPUs that have it)
+};
+/// What pick_fill_kernel() uses now.
+KernelIsa kernel_isa();
+const char* to_string(KernelIsa isa);
+/// For tests that compare instruction sets: use `isa` from now on (it must
+/// be one kernel_isa_available() accepts), or the best one again with nullopt.
+void override_kernel_isa(std::optional<KernelIsa> isa);
+/// Whether this build has kernels for `isa` and this CPU can run them.
+bool kernel_isa_available(KernelIsa isa);
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_FILL_TYPES_HPP

@@ -1,0 +1,104 @@
+// The fill kernels compiled for AVX2 (src/fill_kernels_avx2.cpp) against the
+// baseline ones: the same image bit for bit in every shader, mode, precision
+// and effect set, so the picture does not depend on the CPU.
+#include <cstdint>
+#include <cstring>
+#include <random>
+
+#include <catch2/catch.hpp>
+
+#include "fill_types.hpp"
+#include "phongrast/render.hpp"
+#include "test_meshes.hpp"
+
+using namespace phongrast;
+
+namespace {
+
+bool same_bits(const Image& a, const Image& b) {
+    return a.pixels.size() == b.pixels.size() &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
+}
+
+/// Restores the automatic choice however the test ends.
+struct IsaOverride {
+    explicit IsaOverride(detail::KernelIsa isa) { detail::override_kernel_isa(isa); }
+    ~IsaOverride() { detail::override_kernel_isa(std::nullopt); }
+    IsaOverride(const IsaOverride&) = delete;
+    IsaOverride& operator=(const IsaOverride&) = delete;
+};
+
+RenderResult render_with(detail::KernelIsa isa, const Scene& scene, const RenderOptions& options) {
+    const IsaOverride use(isa);
+    REQUIRE(detail::kernel_isa() == isa);
+    return render(scene, options);
+}
+
+/// A sphere with random vertex colours and three lights; large triangles
+/// (long spans, full vector batches) and, at the rim, tiny ones (scalar path).
+Scene sphere_scene(std::uint32_t seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    Scene scene;
+    scene.mesh = test_meshes::uv_sphere(12 + static_cast<int>(seed % 3) * 10, 24, 1.0);
+    for (std::size_t v = 0; v < scene.mesh.positions.size(); ++v) {
+        scene.mesh.colors.push_back({unit(random), unit(random), unit(random)});
+    }
+    scene.camera.eye = {0.4 * unit(random), 0.6, 2.6 + unit(random)};
+    scene.camera.focal = 1.5;
+    scene.image = {97, 83, {0.05f, 0.05f, 0.1f}};
+    scene.material = {glm::vec3(0.1f), glm::vec3(0.7f), glm::vec3(0.6f), seed % 2 ? 16.0f : 7.5f};
+    scene.lights = {{{2.0, 2.0, 2.0}, {1.0f, 0.9f, 0.8f}},
+                    {{-2.0, 1.0, 0.5}, {0.3f, 0.4f, 0.9f}},
+                    {{0.0, -3.0, 1.0}, {0.5f, 0.5f, 0.5f}}};
+    return scene;
+}
+
+}  // namespace
+
+TEST_CASE("AVX2 kernels paint the baseline kernels' image bit for bit") {
+    if (!detail::kernel_isa_available(detail::KernelIsa::avx2)) {
+        WARN("skipped: this build has no AVX2 kernels or this CPU has no AVX2 (the baseline kernels draw everything)");
+        return;
+    }
+    CHECK(detail::kernel_isa() == detail::KernelIsa::avx2);  // the best one is the default
+    for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+        Scene scene = sphere_scene(seed);
+        for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+            scene.shader = shader;
+            for (Lighting lighting : {Lighting::full(), Lighting::only_ambient(), Lighting::only_specular()}) {
+                scene.lighting = lighting;
+                for (bool seed_mode : {false, true}) {
+                    for (Precision precision : {Precision::single_float, Precision::double_float}) {
+                        for (bool specialize : {true, false}) {
+                            RenderOptions options = seed_mode ? RenderOptions::seed() : RenderOptions::exact();
+                            options.precision = precision;
+                            options.specialize_effects = specialize;
+                            const RenderResult baseline = render_with(detail::KernelIsa::baseline, scene, options);
+                            const RenderResult avx2 = render_with(detail::KernelIsa::avx2, scene, options);
+                            INFO("seed " << seed << ", " << to_string(shader) << ", " << to_string(lighting)
+                                         << (seed_mode ? ", seed mode" : ", exact")
+                                         << (precision == Precision::double_float ? ", double" : ", float")
+                                         << (specialize ? ", specialised" : ", general"));
+                            REQUIRE(baseline.stats.samples_shaded > 1000);
+                            CHECK(same_bits(baseline.image, avx2.image));
+                            CHECK(baseline.stats.samples_shaded == avx2.stats.samples_shaded);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("an instruction set the build or the CPU lacks cannot be forced") {
+    if (detail::kernel_isa_available(detail::KernelIsa::avx2)) {
+        const IsaOverride use(detail::KernelIsa::baseline);
+        CHECK(detail::kernel_isa() == detail::KernelIsa::baseline);
+    } else {
+        CHECK_THROWS_AS(detail::override_kernel_isa(detail::KernelIsa::avx2), std::invalid_argument);
+        CHECK(detail::kernel_isa() == detail::KernelIsa::baseline);
+    }
+    detail::override_kernel_isa(std::nullopt);
+    CHECK(detail::kernel_isa_available(detail::KernelIsa::baseline));
+}
