@@ -1,0 +1,23 @@
+#!/bin/sh
+# Checks the object file of src/fill_kernels_avx2.cpp: its kernels (namespace
+# phongrast::detail::avx2) use 256-bit AVX registers, and no other function in
+# it (the inline functions and templates of the headers it includes, which
+# the linker may pick over other objects' copies) uses a VEX-encoded (AVX)
+# instruction, so code that runs on any x86-64 never lands in AVX2 code.
+#   check_avx2_object.sh OBJECT_FILE
+set -eu
+objdump -d -C --no-show-raw-insn "$1" | awk '
+  /^[0-9a-f]+ <.*>:$/ { name = $0; kernel = index(name, "::avx2::") > 0; if (kernel) kernels++; else others++; next }
+  name != "" && /\t/ {
+    n = split($0, field, "\t"); instruction = field[n]
+    if (kernel) { if (instruction ~ /ymm/) wide[name] = 1 }
+    else if (instruction ~ /^v[a-z0-9]+[ \t]/ || instruction ~ /^v[a-z0-9]+$/) { bad[name] = instruction }
+  }
+  END {
+    for (f in wide) wide_count++
+    printf "%d AVX2 kernel functions, %d of them with ymm registers; %d other functions\n", kernels, wide_count, others
+    failed = 0
+    for (f in bad) { print "AVX instruction outside the AVX2 kernels: " f " (" bad[f] ")"; failed = 1 }
+    if (wide_count == 0) { print "no AVX2 kernel uses ymm registers: the target pragma did not apply"; failed = 1 }
+    exit failed
+  }'
