@@ -17,6 +17,13 @@
 #include <CLI/CLI.hpp>
 
 #include "asset_scenes.hpp"
+// Internal: detail::override_kernel_isa, to time the instruction sets in one
+// process. bench/run_speed.sh --baseline also builds this file against older
+// renderers, which have no such header: --steps and --isa are then absent.
+#if __has_include("fill_types.hpp")
+#include "fill_types.hpp"
+#define PHONGRAST_SPEED_HAS_ISA 1
+#endif
 #include "phongrast/render.hpp"
 #include "scenes.hpp"
 
@@ -31,6 +38,54 @@ llvmpipe_compare::NamedScene find_scene(const std::string& name, int rows) {
     throw std::invalid_argument("--scene: expected icosphere-9.7k, icosphere-1.3M or a mesh of ../shared/assets, got '" +
                                 name + "'");
 }
+
+#ifdef PHONGRAST_SPEED_HAS_ISA
+/// One way of rendering that --steps compares.
+struct Variant {
+    const char* name;
+    phongrast::Overdraw overdraw;
+    phongrast::detail::KernelIsa isa;
+};
+
+/// --steps: the speed steps of docs/performance.md one by one, timed in one
+/// process, round-robin (each round renders every variant once, so load hits
+/// all alike); prints a Markdown row of medians and ratios to the first.
+void time_steps(const phongrast::Scene& scene, phongrast::RenderOptions options, int repeat, int warmup,
+                const std::string& label) {
+    using phongrast::Overdraw;
+    using phongrast::detail::KernelIsa;
+    std::vector<Variant> variants = {{"every layer, baseline", Overdraw::shade_all, KernelIsa::baseline},
+                                     {"automatic, baseline", Overdraw::automatic, KernelIsa::baseline}};
+    if (phongrast::detail::kernel_isa_available(KernelIsa::avx2)) {
+        variants.push_back({"automatic, AVX2", Overdraw::automatic, KernelIsa::avx2});
+    }
+    std::vector<std::vector<double>> ms(variants.size());
+    std::vector<std::uint64_t> shaded(variants.size());
+    for (int round = -warmup; round < repeat; ++round) {
+        for (std::size_t v = 0; v < variants.size(); ++v) {
+            options.overdraw = variants[v].overdraw;
+            phongrast::detail::override_kernel_isa(variants[v].isa);
+            const auto start = std::chrono::steady_clock::now();
+            const phongrast::RenderResult result = phongrast::render(scene, options);
+            const double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            if (round >= 0) ms[v].push_back(elapsed);
+            shaded[v] = result.stats.samples_shaded;
+        }
+    }
+    phongrast::detail::override_kernel_isa(std::nullopt);
+    std::vector<double> median(variants.size());
+    for (std::size_t v = 0; v < variants.size(); ++v) {
+        std::sort(ms[v].begin(), ms[v].end());
+        median[v] = ms[v][ms[v].size() / 2];
+    }
+    std::printf("| %s |", label.c_str());
+    for (std::size_t v = 0; v < variants.size(); ++v) std::printf(" %.3f |", median[v]);
+    for (std::size_t v = 1; v < variants.size(); ++v) std::printf(" %.2f |", median[v] / median[0]);
+    std::printf(" %llu / %llu |\n", static_cast<unsigned long long>(shaded[0]),
+                static_cast<unsigned long long>(shaded[variants.size() - 1]));
+}
+
+#endif
 
 double peak_rss_mib() {
     rusage usage{};
@@ -53,6 +108,17 @@ int main(int argc, char** argv) {
     app.add_option("--repeat", repeat, "timed renders")->check(CLI::Range(1, 100000));
     app.add_option("--warmup", warmup, "untimed renders first")->check(CLI::Range(0, 100));
     app.add_option("--precision", precision, "float or double")->check(CLI::IsMember({"float", "double"}));
+#ifdef PHONGRAST_SPEED_HAS_ISA
+    std::string overdraw = "auto", isa = "best";
+    bool steps = false;
+    app.add_option("--overdraw", overdraw, "RenderOptions::overdraw: auto, visible or all")
+        ->check(CLI::IsMember({"auto", "visible", "all"}));
+    app.add_option("--isa", isa, "fill kernels: best (the default choice), baseline or avx2")
+        ->check(CLI::IsMember({"best", "baseline", "avx2"}));
+    app.add_flag("--steps", steps,
+                 "time every layer + baseline kernels, automatic overdraw + baseline, automatic + AVX2 "
+                 "round-robin in this process; print a Markdown row (medians in ms, ratios to the first)");
+#endif
     app.add_option("--dump", dump, "write the last image's raw float RGB pixels here (to compare two builds with cmp)");
     CLI11_PARSE(app, argc, argv);
     try {
@@ -63,6 +129,20 @@ int main(int argc, char** argv) {
         options.threads = threads;
         options.precision =
             precision == "double" ? phongrast::Precision::double_float : phongrast::Precision::single_float;
+#ifdef PHONGRAST_SPEED_HAS_ISA
+        options.overdraw = overdraw == "all"       ? phongrast::Overdraw::shade_all
+                           : overdraw == "visible" ? phongrast::Overdraw::shade_visible
+                                                   : phongrast::Overdraw::automatic;
+        if (isa != "best") {
+            phongrast::detail::override_kernel_isa(isa == "avx2" ? phongrast::detail::KernelIsa::avx2
+                                                                 : phongrast::detail::KernelIsa::baseline);
+        }
+        if (steps) {
+            time_steps(named.scene, options, repeat, warmup,
+                       name + " | " + shader + " | " + mode + " | " + std::to_string(threads));
+            return 0;
+        }
+#endif
         const double rss_scene = peak_rss_mib();
         for (int i = 0; i < warmup; ++i) phongrast::render(named.scene, options);
         std::vector<double> ms;
