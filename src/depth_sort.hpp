@@ -18,7 +18,6 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
-#include <numeric>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -36,33 +35,54 @@ inline std::uint64_t farthest_first_key(double depth) {
     return ~ascending;
 }
 
-/// Indices 0..n-1 ordered by descending depth, equal depths in index order:
-/// what std::stable_sort with `depth[a] > depth[b]` returns.
-inline std::vector<std::uint32_t> farthest_first_order(const std::vector<double>& depth) {
+namespace depth_sort {
+constexpr int kDigitBits = 11;
+constexpr int kPasses = (64 + kDigitBits - 1) / kDigitBits;
+constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
+constexpr std::size_t kBlock = std::size_t(1) << 16;
+using Counts = std::array<std::uint32_t, kBuckets>;
+}  // namespace depth_sort
+
+/// The radix sort's working memory, kept between frames by a Renderer.
+struct DepthSortScratch {
+    std::vector<std::uint64_t> keys, keys_scratch;
+    std::vector<std::uint32_t> order_scratch;
+    std::vector<std::array<depth_sort::Counts, depth_sort::kPasses>> first_counts;
+    std::vector<depth_sort::Counts> block_counts;
+};
+
+/// Fills `order` with the indices 0..n-1 ordered by descending depth, equal
+/// depths in index order: what std::stable_sort with `depth[a] > depth[b]`
+/// returns. Allocates nothing once `order` and `scratch` have held as many.
+inline void farthest_first_order(const std::vector<double>& depth, std::vector<std::uint32_t>& order,
+                                 DepthSortScratch& scratch) {
+    using namespace depth_sort;
     const std::size_t n = depth.size();
-    std::vector<std::uint32_t> order(n);
+    order.resize(n);
     if (n < 256) {
-        std::iota(order.begin(), order.end(), 0u);
-        std::stable_sort(order.begin(), order.end(), [&depth](std::uint32_t a, std::uint32_t b) {
-            return depth[a] > depth[b];
-        });
-        return order;
+        // Insertion sort: stable, and (unlike std::stable_sort) no temporary buffer.
+        for (std::size_t i = 0; i < n; ++i) {
+            std::size_t j = i;
+            for (; j > 0 && depth[order[j - 1]] < depth[i]; --j) order[j] = order[j - 1];
+            order[j] = static_cast<std::uint32_t>(i);
+        }
+        return;
     }
-    constexpr int kDigitBits = 11;
-    constexpr int kPasses = (64 + kDigitBits - 1) / kDigitBits;
-    constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
-    constexpr std::size_t kBlock = std::size_t(1) << 16;
-    using Counts = std::array<std::uint32_t, kBuckets>;
     const std::size_t blocks = (n + kBlock - 1) / kBlock;
     const auto block_range = [n](std::size_t block) {
         return std::pair<std::size_t, std::size_t>(block * kBlock, std::min(n, (block + 1) * kBlock));
     };
 
-    std::vector<std::uint64_t> keys(n), keys_scratch(n);
-    std::vector<std::uint32_t> order_scratch(n);
+    std::vector<std::uint64_t>& keys = scratch.keys;
+    std::vector<std::uint64_t>& keys_scratch = scratch.keys_scratch;
+    std::vector<std::uint32_t>& order_scratch = scratch.order_scratch;
+    keys.resize(n);
+    keys_scratch.resize(n);
+    order_scratch.resize(n);
+    std::vector<std::array<Counts, kPasses>>& first_counts = scratch.first_counts;
+    first_counts.resize(blocks);
     // The first pass over the depths makes the keys and every pass's digit
     // counts per block; a digit every key shares leaves the order as it is.
-    std::vector<std::array<Counts, kPasses>> first_counts(blocks);
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
         std::array<Counts, kPasses>& counts = first_counts[block];
         for (Counts& c : counts) c.fill(0);
@@ -75,7 +95,8 @@ inline std::vector<std::uint32_t> farthest_first_order(const std::vector<double>
         }
     });
 
-    std::vector<Counts> block_counts(blocks);
+    std::vector<Counts>& block_counts = scratch.block_counts;
+    block_counts.resize(blocks);
     bool first_pass_done = false;
     for (int pass = 0; pass < kPasses; ++pass) {
         const int shift = pass * kDigitBits;
@@ -117,6 +138,13 @@ inline std::vector<std::uint32_t> farthest_first_order(const std::vector<double>
         order.swap(order_scratch);
         first_pass_done = true;
     }
+}
+
+/// farthest_first_order() into a new vector.
+inline std::vector<std::uint32_t> farthest_first_order(const std::vector<double>& depth) {
+    std::vector<std::uint32_t> order;
+    DepthSortScratch scratch;
+    farthest_first_order(depth, order, scratch);
     return order;
 }
 

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "normals_scratch.hpp"
 #include "phongrast/mesh.hpp"
 
 namespace phongrast {
@@ -24,12 +25,17 @@ glm::dvec3 unit_or_zero(const glm::dvec3& v) {
 
 }  // namespace
 
-std::vector<glm::vec3> calculate_normals(const std::vector<glm::dvec3>& positions,
-                                         const std::vector<Triangle>& triangles) {
-    std::vector<glm::dvec3> sums(positions.size(), glm::dvec3(0.0));
+namespace detail {
+
+void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
+                            NormalsScratch& scratch, std::vector<glm::vec3>& normals) {
+    std::vector<glm::dvec3>& sums = scratch.sums;
+    sums.assign(positions.size(), glm::dvec3(0.0));
     // For the fallback: each vertex's largest adjacent face (twice its area) and unit normal.
-    std::vector<double> largest_area(positions.size(), 0.0);
-    std::vector<glm::dvec3> largest_face_normal(positions.size(), glm::dvec3(0.0));
+    std::vector<double>& largest_area = scratch.largest_area;
+    largest_area.assign(positions.size(), 0.0);
+    std::vector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
+    largest_face_normal.assign(positions.size(), glm::dvec3(0.0));
 
     for (const Triangle& triangle : triangles) {
         const glm::dvec3& a = positions[triangle[0]];
@@ -49,7 +55,7 @@ std::vector<glm::vec3> calculate_normals(const std::vector<glm::dvec3>& position
         }
     }
 
-    std::vector<glm::vec3> normals(positions.size());
+    normals.resize(positions.size());
     for (std::size_t vertex = 0; vertex < positions.size(); ++vertex) {
         glm::dvec3 normal = unit_or_zero(sums[vertex]);
         // A sum that is tiny relative to its largest face means opposite faces
@@ -60,6 +66,15 @@ std::vector<glm::vec3> calculate_normals(const std::vector<glm::dvec3>& position
         }
         normals[vertex] = glm::vec3(normal);
     }
+}
+
+}  // namespace detail
+
+std::vector<glm::vec3> calculate_normals(const std::vector<glm::dvec3>& positions,
+                                         const std::vector<Triangle>& triangles) {
+    detail::NormalsScratch scratch;
+    std::vector<glm::vec3> normals;
+    detail::calculate_normals_into(positions, triangles, scratch, normals);
     return normals;
 }
 

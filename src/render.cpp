@@ -6,22 +6,23 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deque>
+#include <memory>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "clipping.hpp"
 #include "depth_sort.hpp"
 #include "fill_types.hpp"
+#include "normals_scratch.hpp"
 #include "phongrast/render.hpp"
 #include "raster.hpp"
 #include "scene_analysis.hpp"
@@ -41,10 +42,12 @@ constexpr double kNearPlaneOverFocal = 1e-4;
 constexpr double kMaxClippableProjection = 1e306;
 constexpr int kBandRows = 16;
 constexpr std::size_t kSetupChunk = 4096;
+/// Vertices lit by one task (Gouraud with exact light vectors).
+constexpr std::size_t kVertexBlock = 1024;
 /// How many triangles ahead the setup and the fill ask for the memory they will read.
 constexpr std::size_t kPrefetchAhead = 8;
 
-/// Overdraw::shade_visible's scratch, one per worker thread, reused from band to band.
+/// Overdraw::shade_visible's scratch for one band of rows, kept between frames.
 struct VisibleLayer {
     std::vector<std::uint32_t> owner;  ///< per sample of the band: its last triangle, or kNoOwner
     std::vector<std::uint8_t> shown;   ///< per triangle of the band: owns at least one sample
@@ -94,12 +97,25 @@ void validate_scene_values(const Scene& scene) {
     validate_mesh(scene.mesh);
 }
 
-/// The set-up triangles in painter's order: chunk after chunk, each in order.
+/// Corners created by clipping, which draw triangles point to: stored in
+/// blocks that never move, kept (and reused) from one frame to the next.
 template <typename Real>
-struct DrawList {
-    std::vector<std::vector<DrawTriangle<Real>>> chunks;
-    /// Corners created by clipping, which draw triangles point to (a deque never moves its elements).
-    std::vector<std::deque<Varyings<Real>>> clip_vertices;
+class ClipVertexStore {
+public:
+    void clear() { used_ = 0; }
+    const Varyings<Real>* push(const Varyings<Real>& corner) {
+        const std::size_t block = used_ / kBlockSize;
+        if (block == blocks_.size()) blocks_.push_back(std::make_unique<Varyings<Real>[]>(kBlockSize));
+        Varyings<Real>* slot = &blocks_[block][used_ % kBlockSize];
+        *slot = corner;
+        ++used_;
+        return slot;
+    }
+
+private:
+    static constexpr std::size_t kBlockSize = 256;
+    std::vector<std::unique_ptr<Varyings<Real>[]>> blocks_;
+    std::size_t used_ = 0;
 };
 
 struct SetupCounts {
@@ -107,18 +123,50 @@ struct SetupCounts {
     std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during setup
 };
 
+/// Everything a frame works in, kept by a Renderer from one frame to the
+/// next: vectors are resized, never shrunk, so a frame no larger than an
+/// earlier one allocates nothing.
+template <typename Real>
+struct FrameBuffers {
+    NormalsScratch normals_scratch;
+    std::vector<glm::vec3> normals;
+    std::vector<double> camera_depth, column, row;
+    std::vector<Varyings<Real>> varyings;
+    LightRig<Real> rig;
+    std::vector<double> mean_depth;
+    std::vector<std::uint32_t> order;
+    DepthSortScratch sort;
+    /// The set-up triangles in painter's order: chunk after chunk, each in order.
+    std::vector<std::vector<DrawTriangle<Real>>> chunk_draws;
+    std::vector<ClipVertexStore<Real>> chunk_clip_vertices;
+    std::vector<SetupCounts> chunk_counts;
+    std::vector<std::uint32_t> chunk_band_count, band_start, chunk_band_cursor;
+    std::vector<const DrawTriangle<Real>*> binned;
+    std::vector<std::uint64_t> shaded, replaced, covered;
+    std::vector<Real> depth_buffer;
+    // Scratch per fixed piece of work (vertex block, setup chunk, band), not
+    // per thread: which worker runs which piece changes from frame to frame,
+    // and thread-local scratch would then be allocated whenever a thread
+    // first ran a piece.
+    std::vector<LightVectorsAt<Real>> vertex_vectors, setup_vectors, band_vectors;
+    std::vector<VisibleLayer> band_layers;
+};
+
 template <typename Real>
 class Pipeline {
 public:
     /// sample_offset: where in each pixel, relative to its centre, this render
     /// samples (in pixels); the geometry is shifted by minus it (rotated grid).
-    Pipeline(const Scene& scene, const RenderOptions& options, int rows, int columns,
+    Pipeline(const Scene& scene, const RenderOptions& options, int rows, int columns, FrameBuffers<Real>& buffers,
              glm::dvec2 sample_offset = glm::dvec2(0.0))
         : scene_(scene), options_(options),
           frame_(make_camera_frame(scene.camera, rows, columns)),
-          near_(scene.camera.focal * kNearPlaneOverFocal), sample_offset_(sample_offset) {}
+          near_(scene.camera.focal * kNearPlaneOverFocal), sample_offset_(sample_offset), buffers_(buffers),
+          rig_(buffers.rig), camera_depth_(buffers.camera_depth), column_(buffers.column), row_(buffers.row),
+          varyings_(buffers.varyings) {}
 
-    Image run(RenderStats& stats) {
+    /// Renders into `image` (resized to the frame, its memory reused).
+    void run(RenderStats& stats, Image& image) {
         effects_ = find_effects(scene_);
         stats.effects = effects_;
         if (options_.back_faces == BackFaces::cull_when_hidden) {
@@ -136,9 +184,9 @@ public:
             light_vertices();
             count_point_evaluations(varyings_.size(), stats);
         }
-        const std::vector<std::uint32_t> order = painter_order();
-        const DrawList<Real> draws = set_up_triangles(order, stats);
-        return fill(draws, stats);
+        painter_order();
+        set_up_triangles(stats);
+        fill(stats, image);
     }
 
 private:
@@ -148,10 +196,10 @@ private:
         const std::size_t count = mesh.positions.size();
         // Ambient-only scenes never look at a normal: do not compute any.
         const bool need_normals = effects_.normals || !options_.specialize_effects;
-        const std::vector<glm::vec3> computed = need_normals && mesh.normals.empty()
-                                                    ? calculate_normals(mesh)
-                                                    : std::vector<glm::vec3>{};
-        const std::vector<glm::vec3>& normals = mesh.normals.empty() ? computed : mesh.normals;
+        if (need_normals && mesh.normals.empty()) {
+            calculate_normals_into(mesh.positions, mesh.triangles, buffers_.normals_scratch, buffers_.normals);
+        }
+        const std::vector<glm::vec3>& normals = mesh.normals.empty() ? buffers_.normals : mesh.normals;
 
         camera_depth_.resize(count);
         column_.resize(count);
@@ -195,6 +243,8 @@ private:
     }
 
     void build_light_rig() {
+        rig_.lights.clear();
+        rig_.active_lights.clear();
         rig_.material = scene_.material;
         rig_.lighting = scene_.lighting;
         // The same product, in the same order, as ambient_term(): ka * Ia, then * c.
@@ -242,10 +292,12 @@ private:
     // Gouraud with exact light vectors: each vertex's colour does not depend on
     // the triangle, so it is lit once and shared.
     void light_vertices() {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, varyings_.size(), 1024),
-                          [&](const tbb::blocked_range<std::size_t>& range) {
-            LightVectorsAt<Real> vectors;
-            for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const std::size_t blocks = (varyings_.size() + kVertexBlock - 1) / kVertexBlock;
+        if (buffers_.vertex_vectors.size() < blocks) buffers_.vertex_vectors.resize(blocks);
+        tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+            LightVectorsAt<Real>& vectors = buffers_.vertex_vectors[block];
+            const std::size_t end = std::min(varyings_.size(), (block + 1) * kVertexBlock);
+            for (std::size_t i = block * kVertexBlock; i != end; ++i) {
                 Varyings<Real>& v = varyings_[i];
                 v.lit = point_shader_(vectors, v.position, v.normal, v.color);
             }
@@ -254,9 +306,10 @@ private:
 
     // ---- Painter's order ----------------------------------------------------------
     // Depth is the mean z_c of the three vertices; farthest first; ties keep mesh order.
-    std::vector<std::uint32_t> painter_order() const {
+    void painter_order() {
         const std::vector<Triangle>& triangles = scene_.mesh.triangles;
-        std::vector<double> depth(triangles.size());
+        std::vector<double>& depth = buffers_.mean_depth;
+        depth.resize(triangles.size());
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), 16384),
                           [&](const tbb::blocked_range<std::size_t>& range) {
             for (std::size_t t = range.begin(); t != range.end(); ++t) {
@@ -264,27 +317,34 @@ private:
                 depth[t] = (camera_depth_[tri[0]] + camera_depth_[tri[1]] + camera_depth_[tri[2]]) / 3.0;
             }
         });
-        return farthest_first_order(depth);
+        farthest_first_order(depth, buffers_.order, buffers_.sort);
     }
 
     // ---- Triangle setup -----------------------------------------------------------
-    DrawList<Real> set_up_triangles(const std::vector<std::uint32_t>& order, RenderStats& stats) const {
+    void set_up_triangles(RenderStats& stats) {
         // Fixed-size chunks, concatenated in chunk order: the draw list is the
         // same whatever the number of threads.
+        const std::vector<std::uint32_t>& order = buffers_.order;
         const std::size_t chunks = (order.size() + kSetupChunk - 1) / kSetupChunk;
-        std::vector<std::vector<DrawTriangle<Real>>> chunk_draws(chunks);
-        std::vector<std::deque<Varyings<Real>>> chunk_clip_vertices(chunks);
-        std::vector<SetupCounts> chunk_counts(chunks);
+        std::vector<std::vector<DrawTriangle<Real>>>& chunk_draws = buffers_.chunk_draws;
+        std::vector<ClipVertexStore<Real>>& chunk_clip_vertices = buffers_.chunk_clip_vertices;
+        std::vector<SetupCounts>& chunk_counts = buffers_.chunk_counts;
+        if (chunk_draws.size() < chunks) chunk_draws.resize(chunks);
+        if (chunk_clip_vertices.size() < chunks) chunk_clip_vertices.resize(chunks);
+        if (buffers_.setup_vectors.size() < chunks) buffers_.setup_vectors.resize(chunks);
+        chunk_counts.assign(chunks, SetupCounts{});
         tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
             const std::size_t begin = chunk * kSetupChunk;
             const std::size_t end = std::min(order.size(), begin + kSetupChunk);
+            chunk_draws[chunk].clear();
             chunk_draws[chunk].reserve(end - begin);
+            chunk_clip_vertices[chunk].clear();
             for (std::size_t k = begin; k < end; ++k) {
                 if (k + kPrefetchAhead < end) prefetch_vertices(scene_.mesh.triangles[order[k + kPrefetchAhead]]);
-                set_up_triangle(order[k], chunk_draws[chunk], chunk_clip_vertices[chunk], chunk_counts[chunk]);
+                set_up_triangle(order[k], chunk_draws[chunk], chunk_clip_vertices[chunk], chunk_counts[chunk],
+                                buffers_.setup_vectors[chunk]);
             }
         });
-        DrawList<Real> draws;
         for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
             stats.triangles_degenerate += chunk_counts[chunk].degenerate;
             stats.triangles_dropped += chunk_counts[chunk].dropped;
@@ -294,9 +354,7 @@ private:
             stats.triangles_culled += chunk_counts[chunk].culled;
             count_point_evaluations(chunk_counts[chunk].lit_points, stats);
         }
-        draws.chunks = std::move(chunk_draws);  // moving a vector keeps its elements' addresses
-        draws.clip_vertices = std::move(chunk_clip_vertices);
-        return draws;
+        chunks_ = chunks;
     }
 
     // Painter's order visits the vertices in no particular order: ask for a
@@ -324,7 +382,8 @@ private:
     }
 
     void set_up_triangle(std::uint32_t source, std::vector<DrawTriangle<Real>>& out,
-                         std::deque<Varyings<Real>>& clip_vertices, SetupCounts& counts) const {
+                         ClipVertexStore<Real>& clip_vertices, SetupCounts& counts,
+                         LightVectorsAt<Real>& vectors) const {
         const Triangle& tri = scene_.mesh.triangles[source];
         if (hidden_back_faces_ != HiddenBackFaces::unknown && faces_away(tri)) {
             ++counts.culled;
@@ -341,7 +400,7 @@ private:
             (varyings_[tri[0]].position + varyings_[tri[1]].position + varyings_[tri[2]].position) / Real(3);
         if (inside_image && camera_depth_[tri[0]] >= near_ && camera_depth_[tri[1]] >= near_ &&
             camera_depth_[tri[2]] >= near_) {
-            set_up_unclipped(tri, centroid, out, counts);
+            set_up_unclipped(tri, centroid, out, counts, vectors);
             return;
         }
 
@@ -357,7 +416,7 @@ private:
         if (scene_.shader == Shader::gouraud) {
             Varyings<Real>* corners[3] = {&polygon.vertices[0].varyings, &polygon.vertices[1].varyings,
                                           &polygon.vertices[2].varyings};
-            counts.lit_points += light_corners(corners, centroid);
+            counts.lit_points += light_corners(corners, centroid, vectors);
         }
 
         bool clipped = !inside_image;
@@ -380,8 +439,7 @@ private:
             if (!setup_coverage(a, b, c, frame_.rows, frame_.columns, draw.coverage)) continue;
             if (!any_drawn) {
                 for (std::size_t i = 0; i < polygon.count; ++i) {
-                    clip_vertices.push_back(polygon.vertices[i].varyings);
-                    stored[i] = &clip_vertices.back();
+                    stored[i] = clip_vertices.push(polygon.vertices[i].varyings);
                 }
             }
             std::size_t corner_index[3] = {0, k, k + 1};
@@ -402,7 +460,7 @@ private:
         if (any_drawn && scene_.shader == Shader::flat) {
             // Lit only once something is to be drawn: clipped-away and
             // degenerate triangles cost no lighting.
-            const Vec3<Real> lit = flat_color(tri, centroid);
+            const Vec3<Real> lit = flat_color(tri, centroid, vectors);
             ++counts.lit_points;
             for (std::size_t d = first_draw; d < out.size(); ++d) {
                 for (Vec3<Real>& corner_lit : out[d].lit) corner_lit = lit;
@@ -420,7 +478,7 @@ private:
     // The common case, with nothing to clip: no polygon, one draw triangle
     // straight from the vertex arrays.
     void set_up_unclipped(const Triangle& tri, const Vec3<Real>& centroid, std::vector<DrawTriangle<Real>>& out,
-                          SetupCounts& counts) const {
+                          SetupCounts& counts, LightVectorsAt<Real>& vectors) const {
         DrawTriangle<Real> draw;
         const SnappedPoint a = snap(column_[tri[0]], row_[tri[0]]);
         const SnappedPoint b = snap(column_[tri[1]], row_[tri[1]]);
@@ -442,14 +500,14 @@ private:
         }
         draw.centroid = centroid;
         if (scene_.shader == Shader::flat) {
-            const Vec3<Real> lit = flat_color(tri, centroid);
+            const Vec3<Real> lit = flat_color(tri, centroid, vectors);
             for (Vec3<Real>& corner_lit : draw.lit) corner_lit = lit;
             ++counts.lit_points;
         } else if (scene_.shader == Shader::gouraud) {
             // Lit copies of the corners: light_corners() writes their `lit`, the mesh's vertices stay as they are.
             Varyings<Real> copies[3] = {*draw.v[0], *draw.v[1], *draw.v[2]};
             Varyings<Real>* corners[3] = {&copies[0], &copies[1], &copies[2]};
-            counts.lit_points += light_corners(corners, centroid);
+            counts.lit_points += light_corners(corners, centroid, vectors);
             for (int i = 0; i < 3; ++i) draw.lit[i] = copies[i].lit;
         }
         out.push_back(draw);
@@ -468,8 +526,7 @@ private:
 
     // Flat: one colour per triangle, lit at the centroid with the mean vertex
     // normal (renormalised) and the mean vertex colour.
-    Vec3<Real> flat_color(const Triangle& tri, const Vec3<Real>& centroid) const {
-        thread_local LightVectorsAt<Real> vectors;
+    Vec3<Real> flat_color(const Triangle& tri, const Vec3<Real>& centroid, LightVectorsAt<Real>& vectors) const {
         Vec3<Real> normal(Real(0)), color(Real(0));
         for (std::uint32_t index : tri) {
             normal += varyings_[index].normal;
@@ -482,8 +539,8 @@ private:
     // Gouraud with the seed's centroid vectors: lights the triangle's own
     // corners (before clipping, so clipped corners interpolate lit colours).
     // Returns the points lit.
-    std::uint64_t light_corners(Varyings<Real>* const corners[3], const Vec3<Real>& centroid) const {
-        thread_local LightVectorsAt<Real> vectors;
+    std::uint64_t light_corners(Varyings<Real>* const corners[3], const Vec3<Real>& centroid,
+                                LightVectorsAt<Real>& vectors) const {
         if (scene_.shader == Shader::gouraud && options_.light_vectors == LightVectors::triangle_centroid) {
             for (int i = 0; i < 3; ++i) {
                 Varyings<Real>& v = *corners[i];
@@ -565,19 +622,29 @@ private:
     }
 
     // ---- Fill ---------------------------------------------------------------------
-    Image fill(const DrawList<Real>& list, RenderStats& stats) const {
-        Image image(frame_.rows, frame_.columns, scene_.image.background);
+    void fill(RenderStats& stats, Image& image) {
+        image.rows = frame_.rows;
+        image.columns = frame_.columns;
+        image.pixels.assign(static_cast<std::size_t>(frame_.rows) * static_cast<std::size_t>(frame_.columns),
+                            scene_.image.background);
         const bool depth_test = options_.visibility == Visibility::depth_buffer;
-        std::vector<Real> depth_buffer(depth_test ? image.pixels.size() : 0,
-                                       std::numeric_limits<Real>::infinity());
+        std::vector<Real>& depth_buffer = buffers_.depth_buffer;
+        depth_buffer.assign(depth_test ? image.pixels.size() : 0, std::numeric_limits<Real>::infinity());
         const int bands = (frame_.rows + kBandRows - 1) / kBandRows;
-        std::vector<std::uint64_t> shaded(bands, 0), replaced(bands, 0);
+        std::vector<std::uint64_t>& shaded = buffers_.shaded;
+        std::vector<std::uint64_t>& replaced = buffers_.replaced;
+        std::vector<std::uint64_t>& covered = buffers_.covered;
+        shaded.assign(bands, 0);
+        replaced.assign(bands, 0);
+        covered.assign(bands, 0);
+        const std::vector<std::vector<DrawTriangle<Real>>>& chunk_draws = buffers_.chunk_draws;
 
         // Bin the draws by band, keeping painter's order within each band:
         // counted and scattered in parallel over the setup chunks (which are
         // in painter's order), each chunk writing its own slice of every band.
-        const std::size_t chunks = list.chunks.size();
-        std::vector<std::uint32_t> chunk_band_count(chunks * static_cast<std::size_t>(bands), 0);
+        const std::size_t chunks = chunks_;
+        std::vector<std::uint32_t>& chunk_band_count = buffers_.chunk_band_count;
+        chunk_band_count.assign(chunks * static_cast<std::size_t>(bands), 0);
         const auto for_each_band = [](const DrawTriangle<Real>& draw, auto&& visit) {
             for (int band = draw.coverage.row_min / kBandRows; band <= draw.coverage.row_max / kBandRows; ++band) {
                 visit(static_cast<std::size_t>(band));
@@ -585,13 +652,15 @@ private:
         };
         tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
             std::uint32_t* count = &chunk_band_count[chunk * static_cast<std::size_t>(bands)];
-            for (const DrawTriangle<Real>& draw : list.chunks[chunk]) {
+            for (const DrawTriangle<Real>& draw : chunk_draws[chunk]) {
                 for_each_band(draw, [&](std::size_t band) { ++count[band]; });
             }
         });
         // Band-major offsets: band b's slice starts at band_start[b]; within it, chunk after chunk.
-        std::vector<std::uint32_t> band_start(static_cast<std::size_t>(bands) + 1, 0);
-        std::vector<std::uint32_t> chunk_band_cursor(chunk_band_count.size());
+        std::vector<std::uint32_t>& band_start = buffers_.band_start;
+        std::vector<std::uint32_t>& chunk_band_cursor = buffers_.chunk_band_cursor;
+        band_start.assign(static_cast<std::size_t>(bands) + 1, 0);
+        chunk_band_cursor.resize(chunk_band_count.size());
         {
             std::uint32_t total = 0;
             for (int band = 0; band < bands; ++band) {
@@ -604,25 +673,28 @@ private:
             }
             band_start[bands] = total;
         }
-        std::vector<const DrawTriangle<Real>*> binned(band_start[bands]);
+        std::vector<const DrawTriangle<Real>*>& binned = buffers_.binned;
+        binned.resize(band_start[bands]);
         tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
             std::uint32_t* cursor = &chunk_band_cursor[chunk * static_cast<std::size_t>(bands)];
-            for (const DrawTriangle<Real>& draw : list.chunks[chunk]) {
+            for (const DrawTriangle<Real>& draw : chunk_draws[chunk]) {
                 for_each_band(draw, [&](std::size_t band) { binned[cursor[band]++] = &draw; });
             }
         });
 
-        std::vector<std::uint64_t> covered(bands, 0);
         const bool shade_visible = !depth_test && overdraw_shades_visible_only();
-        tbb::enumerable_thread_specific<VisibleLayer> layers;
+        if (buffers_.band_vectors.size() < static_cast<std::size_t>(bands)) buffers_.band_vectors.resize(bands);
+        if (shade_visible && buffers_.band_layers.size() < static_cast<std::size_t>(bands)) {
+            buffers_.band_layers.resize(bands);
+        }
         tbb::parallel_for(0, bands, [&](int band) {
             FillTarget<Real> target{image, depth_buffer, band * kBandRows,
                                     std::min(frame_.rows, (band + 1) * kBandRows), depth_test, 0, 0};
             const DrawTriangle<Real>* const* draws = binned.data() + band_start[band];
             const std::uint32_t count = band_start[band + 1] - band_start[band];
-            LightVectorsAt<Real> vectors;
+            LightVectorsAt<Real>& vectors = buffers_.band_vectors[band];
             if (shade_visible) {
-                fill_visible_layer(draws, count, target, vectors, layers.local(), covered[band]);
+                fill_visible_layer(draws, count, target, vectors, buffers_.band_layers[band], covered[band]);
             } else {
                 for (std::uint32_t i = 0; i < count; ++i) {
                     if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
@@ -639,7 +711,6 @@ private:
             stats.nonfinite_values_replaced += replaced[band];
         }
         count_sample_evaluations(stats.samples_shaded, stats);
-        return image;
     }
 
     /// Overdraw::automatic picks shade_visible only for per-sample lighting:
@@ -706,12 +777,16 @@ private:
     glm::dvec2 sample_offset_;
     EffectSet effects_;
     HiddenBackFaces hidden_back_faces_ = HiddenBackFaces::unknown;
-    LightRig<Real> rig_;
+    FrameBuffers<Real>& buffers_;
+    LightRig<Real>& rig_;
     PointShader<Real> point_shader_;
     FillSetup<Real> fill_setup_;
     FillKernel<Real> kernel_ = nullptr;
-    std::vector<double> camera_depth_, column_, row_;
-    std::vector<Varyings<Real>> varyings_;
+    std::vector<double>& camera_depth_;
+    std::vector<double>& column_;
+    std::vector<double>& row_;
+    std::vector<Varyings<Real>>& varyings_;
+    std::size_t chunks_ = 0;  ///< setup chunks of this frame (buffers_.chunk_draws may hold more)
 };
 
 // Rotated grid: sample k = i * s + j of an s x s set sits at
@@ -735,8 +810,11 @@ void add_pass_stats(const RenderStats& pass, RenderStats& total) {
     total.normal_interpolations += pass.normal_interpolations;
 }
 
-Image box_downsample(const Image& fine, int factor, int rows, int columns) {
-    Image coarse(rows, columns);
+/// Averages each factor x factor block of `fine` into `coarse` (resized, memory reused).
+void box_downsample(const Image& fine, int factor, int rows, int columns, Image& coarse) {
+    coarse.rows = rows;
+    coarse.columns = columns;
+    coarse.pixels.resize(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns));
     const float weight = 1.0f / static_cast<float>(factor * factor);
     for (int row = 0; row < rows; ++row) {
         for (int column = 0; column < columns; ++column) {
@@ -747,15 +825,10 @@ Image box_downsample(const Image& fine, int factor, int rows, int columns) {
             coarse.at(row, column) = sum * weight;
         }
     }
-    return coarse;
 }
 
-}  // namespace
-}  // namespace detail
-
-RenderResult render(const Scene& scene, const RenderOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
-    detail::validate_scene_values(scene);
+void validate_render_request(const Scene& scene, const RenderOptions& options) {
+    validate_scene_values(scene);
     if (options.samples_per_axis < 1 || options.samples_per_axis > 16) {
         throw std::invalid_argument("samples_per_axis: expected 1 to 16, got " +
                                     std::to_string(options.samples_per_axis));
@@ -764,65 +837,128 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     const int factor = options.samples_per_axis;
     const long long fine_rows = static_cast<long long>(scene.image.rows) * factor;
     const long long fine_columns = static_cast<long long>(scene.image.columns) * factor;
-    if (scene.image.rows < 1 || fine_rows > detail::kMaxImageSide) {
-        throw std::invalid_argument("image.height: expected 1 to " +
-                                    std::to_string(detail::kMaxImageSide / factor) + " rows, got " +
-                                    std::to_string(scene.image.rows));
+    if (scene.image.rows < 1 || fine_rows > kMaxImageSide) {
+        throw std::invalid_argument("image.height: expected 1 to " + std::to_string(kMaxImageSide / factor) +
+                                    " rows, got " + std::to_string(scene.image.rows));
     }
-    if (scene.image.columns < 1 || fine_columns > detail::kMaxImageSide) {
-        throw std::invalid_argument("image.width: expected 1 to " +
-                                    std::to_string(detail::kMaxImageSide / factor) + " columns, got " +
-                                    std::to_string(scene.image.columns));
+    if (scene.image.columns < 1 || fine_columns > kMaxImageSide) {
+        throw std::invalid_argument("image.width: expected 1 to " + std::to_string(kMaxImageSide / factor) +
+                                    " columns, got " + std::to_string(scene.image.columns));
+    }
+}
+
+}  // namespace
+
+/// A Renderer's state: its options, its thread arena and every buffer a frame works in.
+struct RendererState {
+    RenderOptions options;
+    std::vector<std::pair<int, std::unique_ptr<tbb::task_arena>>> arenas;
+    RenderResult result;
+    Image fine, pass, sum;  ///< supersampling: the large image, or one rotated-grid pass and the running sum
+    FrameBuffers<float> single;
+    FrameBuffers<double> twice;
+
+    template <typename Real>
+    FrameBuffers<Real>& buffers() {
+        if constexpr (std::is_same_v<Real, float>) {
+            return single;
+        } else {
+            return twice;
+        }
     }
 
-    RenderResult result;
-    result.stats.triangles_in = scene.mesh.triangles.size();
-    const int concurrency = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
-    tbb::task_arena arena(concurrency);
-    arena.execute([&] {
-        const auto run = [&](auto real_tag) {
-            using Real = decltype(real_tag);
-            detail::Pipeline<Real> pipeline(scene, options, static_cast<int>(fine_rows),
-                                            static_cast<int>(fine_columns));
-            return pipeline.run(result.stats);
-        };
-        if (factor > 1 && options.sample_pattern == SamplePattern::rotated_grid) {
-            // One render per sample at the final size, averaged like box_downsample does.
-            const auto pass = [&](auto real_tag, glm::dvec2 offset, RenderStats& stats) {
+    /// One arena per thread count asked for, kept: switching thread counts between frames allocates nothing either.
+    tbb::task_arena& arena_for(int threads) {
+        for (auto& [count, arena] : arenas) {
+            if (count == threads) return *arena;
+        }
+        constexpr int kAllCores = tbb::task_arena::automatic;  // a copy: no reference to TBB's static member
+        arenas.emplace_back(threads, std::make_unique<tbb::task_arena>(threads > 0 ? threads : kAllCores));
+        return *arenas.back().second;
+    }
+
+    void render(const Scene& scene) {
+        const auto start = std::chrono::steady_clock::now();
+        validate_render_request(scene, options);
+        const int factor = options.samples_per_axis;
+        const int fine_rows = scene.image.rows * factor, fine_columns = scene.image.columns * factor;
+        result.stats = RenderStats{};
+        result.stats.triangles_in = scene.mesh.triangles.size();
+        arena_for(options.threads).execute([&] {
+            const auto run = [&](auto real_tag, int rows, int columns, glm::dvec2 offset, RenderStats& stats,
+                                 Image& image) {
                 using Real = decltype(real_tag);
-                detail::Pipeline<Real> pipeline(scene, options, scene.image.rows, scene.image.columns, offset);
-                return pipeline.run(stats);
+                Pipeline<Real> pipeline(scene, options, rows, columns, buffers<Real>(), offset);
+                pipeline.run(stats, image);
             };
-            Image sum(scene.image.rows, scene.image.columns);
-            for (int i = 0; i < factor; ++i) {
-                for (int j = 0; j < factor; ++j) {
-                    const glm::dvec2 offset = detail::rotated_grid_offset(i, j, factor);
-                    RenderStats pass_stats;
-                    pass_stats.triangles_in = result.stats.triangles_in;
-                    const Image image = options.precision == Precision::double_float
-                                            ? pass(double{}, offset, pass_stats)
-                                            : pass(float{}, offset, pass_stats);
-                    for (std::size_t p = 0; p < sum.pixels.size(); ++p) sum.pixels[p] += image.pixels[p];
-                    if (i == 0 && j == 0) {
-                        result.stats = pass_stats;
-                    } else {
-                        detail::add_pass_stats(pass_stats, result.stats);
+            const auto run_in_precision = [&](int rows, int columns, glm::dvec2 offset, RenderStats& stats,
+                                              Image& image) {
+                if (options.precision == Precision::double_float) {
+                    run(double{}, rows, columns, offset, stats, image);
+                } else {
+                    run(float{}, rows, columns, offset, stats, image);
+                }
+            };
+            if (factor > 1 && options.sample_pattern == SamplePattern::rotated_grid) {
+                // One render per sample at the final size, averaged like box_downsample does.
+                sum.rows = scene.image.rows;
+                sum.columns = scene.image.columns;
+                sum.pixels.assign(static_cast<std::size_t>(sum.rows) * static_cast<std::size_t>(sum.columns),
+                                  glm::vec3(0.0f));
+                for (int i = 0; i < factor; ++i) {
+                    for (int j = 0; j < factor; ++j) {
+                        RenderStats pass_stats;
+                        pass_stats.triangles_in = result.stats.triangles_in;
+                        run_in_precision(scene.image.rows, scene.image.columns, rotated_grid_offset(i, j, factor),
+                                         pass_stats, pass);
+                        for (std::size_t p = 0; p < sum.pixels.size(); ++p) sum.pixels[p] += pass.pixels[p];
+                        if (i == 0 && j == 0) {
+                            result.stats = pass_stats;
+                        } else {
+                            add_pass_stats(pass_stats, result.stats);
+                        }
                     }
                 }
+                const float weight = 1.0f / static_cast<float>(factor * factor);
+                result.image.rows = sum.rows;
+                result.image.columns = sum.columns;
+                result.image.pixels.resize(sum.pixels.size());
+                for (std::size_t p = 0; p < sum.pixels.size(); ++p) result.image.pixels[p] = sum.pixels[p] * weight;
+                return;
             }
-            const float weight = 1.0f / static_cast<float>(factor * factor);
-            for (glm::vec3& pixel : sum.pixels) pixel *= weight;
-            result.image = std::move(sum);
-            return;
-        }
-        Image fine = options.precision == Precision::double_float ? run(double{}) : run(float{});
-        result.image = factor == 1 ? std::move(fine)
-                                   : detail::box_downsample(fine, factor, scene.image.rows,
-                                                            scene.image.columns);
-    });
-    result.stats.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
+            if (factor == 1) {
+                run_in_precision(fine_rows, fine_columns, glm::dvec2(0.0), result.stats, result.image);
+                return;
+            }
+            run_in_precision(fine_rows, fine_columns, glm::dvec2(0.0), result.stats, fine);
+            box_downsample(fine, factor, scene.image.rows, scene.image.columns, result.image);
+        });
+        result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+};
+
+}  // namespace detail
+
+Renderer::Renderer(const RenderOptions& options) : state_(std::make_unique<detail::RendererState>()) {
+    state_->options = options;
+}
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+
+const RenderOptions& Renderer::options() const { return state_->options; }
+void Renderer::set_options(const RenderOptions& options) { state_->options = options; }
+
+const RenderResult& Renderer::render(const Scene& scene) {
+    state_->render(scene);
+    return state_->result;
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    detail::RendererState state;
+    state.options = options;
+    state.render(scene);
+    return std::move(state.result);
 }
 
 Image render_object(const std::vector<glm::dvec3>& positions, const std::vector<glm::vec3>& colors,

@@ -5,6 +5,7 @@
 #define PHONGRAST_RENDER_HPP
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -165,6 +166,36 @@ struct RenderResult {
 /// Renders a scene. Throws std::invalid_argument for an invalid camera, image
 /// size or mesh (the message names the field).
 RenderResult render(const Scene& scene, const RenderOptions& options = RenderOptions::exact());
+
+namespace detail {
+struct RendererState;
+}
+
+/// Renders frame after frame (an animation, a benchmark, an interactive
+/// view) and keeps its working memory and worker threads from one frame to
+/// the next: once it has rendered a frame, a frame with no more vertices,
+/// triangles, pixels and lights than any before allocates no memory
+/// (tests/test_renderer.cpp counts). Pictures and statistics are render()'s.
+/// One frame at a time: a Renderer is not to be used by two threads at once.
+class Renderer {
+public:
+    explicit Renderer(const RenderOptions& options = RenderOptions::exact());
+    ~Renderer();
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    const RenderOptions& options() const;
+    void set_options(const RenderOptions& options);
+
+    /// Renders `scene`. The result stays valid until the next call; copy it to keep it.
+    /// Throws like render().
+    const RenderResult& render(const Scene& scene);
+
+private:
+    std::unique_ptr<detail::RendererState> state_;
+};
 
 /// The seed's call with plain arrays: positions (x, y, z), per-vertex colours
 /// (r, g, b; may be empty for white) and faces (0-based index triples).

@@ -1,0 +1,27 @@
+// calculate_normals() into caller-owned memory (internal header), so that a
+// Renderer computes a mesh's normals frame after frame without allocating.
+#ifndef PHONGRAST_SRC_NORMALS_SCRATCH_HPP
+#define PHONGRAST_SRC_NORMALS_SCRATCH_HPP
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "phongrast/mesh.hpp"
+
+namespace phongrast::detail {
+
+/// calculate_normals()'s working memory.
+struct NormalsScratch {
+    std::vector<glm::dvec3> sums;
+    std::vector<double> largest_area;
+    std::vector<glm::dvec3> largest_face_normal;
+};
+
+/// calculate_normals(positions, triangles), written into `normals`.
+void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
+                            NormalsScratch& scratch, std::vector<glm::vec3>& normals);
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_NORMALS_SCRATCH_HPP
