@@ -44,17 +44,21 @@ int run_render(const RenderCommand& command) {
     Timing timing;
     const int runs = command.repeat > 0 ? command.repeat : 1;
     timing.warm_up = command.repeat > 0;
+    // One Renderer for the warm-up and every timed run: after the first
+    // frame the repeats allocate nothing, so --repeat times the steady state.
+    Renderer renderer(prepared.options);
     if (timing.warm_up) {
         messages.progress(0, runs, "warm-up");
-        render(prepared.scene, prepared.options);
+        renderer.render(prepared.scene);
     }
-    RenderResult result;
+    const RenderResult* last = nullptr;
     for (int run = 0; run < runs; ++run) {
         if (runs > 1) messages.progress(run + 1, runs, "rendering");
         const Clock::time_point start = Clock::now();
-        result = render(prepared.scene, prepared.options);
+        last = &renderer.render(prepared.scene);
         timing.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     }
+    const RenderResult& result = *last;
     messages.progress_done();
 
     io::write_image(result.image, output);

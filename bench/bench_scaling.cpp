@@ -41,8 +41,9 @@ void render_case(benchmark::State& state, int frequency, int rows, phongrast::Sh
     phongrast::RenderOptions options = phongrast::RenderOptions::exact();
     options.threads = threads;
     phongrast::RenderStats stats;
+    phongrast::Renderer renderer(options);  // frames after the first allocate nothing
     for (auto _ : state) {
-        phongrast::RenderResult result = phongrast::render(scene, options);
+        const phongrast::RenderResult& result = renderer.render(scene);
         stats = result.stats;
         benchmark::DoNotOptimize(result.image.pixels.data());
     }

@@ -81,20 +81,21 @@ void run(const Settings& settings) {
             phongrast::RenderOptions seed = phongrast::RenderOptions::seed();
             exact.threads = seed.threads = settings.threads;
 
-            const auto time_phongrast = [&scene](const phongrast::RenderOptions& options,
-                                                 phongrast::Image* keep) {
+            // Like llvmpipe's context, a Renderer keeps its buffers between frames.
+            phongrast::Renderer exact_renderer(exact), seed_renderer(seed);
+            const auto time_phongrast = [&scene](phongrast::Renderer& renderer, phongrast::Image* keep) {
                 const auto start = std::chrono::steady_clock::now();
-                phongrast::RenderResult result = phongrast::render(scene, options);
+                const phongrast::RenderResult& result = renderer.render(scene);
                 const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                if (keep) *keep = std::move(result.image);
+                if (keep) *keep = result.image;  // outside the timed part
                 return seconds;
             };
             phongrast::Image phongrast_image;
             std::vector<double> sort_s;
             llvmpipe.load(scene);
             const std::vector<double> medians = interleaved_medians(
-                settings.repeat, {[&] { return time_phongrast(exact, &phongrast_image); },
-                                  [&] { return time_phongrast(seed, nullptr); },
+                settings.repeat, {[&] { return time_phongrast(exact_renderer, &phongrast_image); },
+                                  [&] { return time_phongrast(seed_renderer, nullptr); },
                                   [&] {
                                       const llvmpipe_compare::FrameTimes times = llvmpipe.draw();
                                       sort_s.push_back(times.sort);
