@@ -2,10 +2,11 @@
 // render(), and no memory allocated once it has rendered a frame at least as
 // large (issue 8: "no allocation per triangle or per frame after the first").
 //
-// Allocations are counted by replacing the global operator new in this test
-// executable: every std::vector, std::deque, std::string or make_unique of
-// phongrast's code goes through it. (oneTBB's task and thread-local storage
-// come from its own allocator, not counted here.)
+// Allocations are counted by replacing the global operator new (and, so that
+// every new meets its own delete, the matching deletes and nothrow forms) in
+// this test executable: every std::vector, std::string or make_unique of
+// phongrast's code goes through it. (oneTBB's tasks come from its own
+// allocator, not counted here.)
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
@@ -29,7 +30,17 @@ void* operator new(std::size_t size) {
     throw std::bad_alloc();
 }
 void* operator new[](std::size_t size) { return operator new(size); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    try {
+        return operator new(size);
+    } catch (const std::bad_alloc&) {
+        return nullptr;
+    }
+}
+void* operator new[](std::size_t size, const std::nothrow_t& nothrow) noexcept { return operator new(size, nothrow); }
 void operator delete(void* memory) noexcept { std::free(memory); }
+void operator delete(void* memory, const std::nothrow_t&) noexcept { std::free(memory); }
+void operator delete[](void* memory, const std::nothrow_t&) noexcept { std::free(memory); }
 void operator delete[](void* memory) noexcept { std::free(memory); }
 void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
 void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); }

@@ -5,8 +5,9 @@
 # the linker may pick over other objects' copies) uses a VEX-encoded (AVX)
 # instruction, so code that runs on any x86-64 never lands in AVX2 code.
 #   check_avx2_object.sh OBJECT_FILE [optimised]
-# With "optimised" (any build but Debug's -O0, which vectorises nothing) the
-# kernels must also use ymm registers: proof that the target pragma applied.
+# With "optimised" (a Release build: -O3 vectorises the kernels; -O0 does
+# not, nor GCC 12's -O2 with its very cheap cost model) the kernels must
+# also use ymm registers: proof that the target pragma applied.
 set -eu
 expect_wide=0
 [ "${2:-}" = optimised ] && expect_wide=1
