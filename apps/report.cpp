@@ -37,13 +37,14 @@ std::string summary_line(const RenderStats& stats, double seconds) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer,
                   "%llu triangles in, %llu drawn, %llu dropped, %llu clipped, %llu culled, %llu outside the view, "
-                  "%llu degenerate; %llu samples covered, %llu shaded; render %.2f ms",
+                  "%llu between samples, %llu degenerate; %llu samples covered, %llu shaded; render %.2f ms",
                   static_cast<unsigned long long>(stats.triangles_in),
                   static_cast<unsigned long long>(stats.triangles_drawn),
                   static_cast<unsigned long long>(stats.triangles_dropped),
                   static_cast<unsigned long long>(stats.triangles_clipped),
                   static_cast<unsigned long long>(stats.triangles_culled),
                   static_cast<unsigned long long>(stats.triangles_outside),
+                  static_cast<unsigned long long>(stats.triangles_between_samples),
                   static_cast<unsigned long long>(stats.triangles_degenerate),
                   static_cast<unsigned long long>(stats.samples_covered),
                   static_cast<unsigned long long>(stats.samples_shaded), seconds * 1e3);
@@ -87,6 +88,7 @@ std::string stats_json(const Timing& timing, const RenderStats& stats, const Sce
                          {"triangles_dropped", stats.triangles_dropped},
                          {"triangles_clipped", stats.triangles_clipped},
                          {"triangles_outside", stats.triangles_outside},
+                         {"triangles_between_samples", stats.triangles_between_samples},
                          {"triangles_drawn", stats.triangles_drawn},
                          {"samples_covered", stats.samples_covered},
                          {"samples_shaded", stats.samples_shaded},

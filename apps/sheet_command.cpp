@@ -72,6 +72,7 @@ int run_sheet(const SheetCommand& command) {
         total.triangles_clipped += result.stats.triangles_clipped;
         total.triangles_culled += result.stats.triangles_culled;
         total.triangles_outside += result.stats.triangles_outside;
+        total.triangles_between_samples += result.stats.triangles_between_samples;
         total.triangles_degenerate += result.stats.triangles_degenerate;
         total.seconds += result.stats.seconds;
         cells.push_back({std::move(result.image), figure.label});

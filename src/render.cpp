@@ -119,7 +119,7 @@ private:
 };
 
 struct SetupCounts {
-    std::uint64_t degenerate = 0, dropped = 0, clipped = 0, outside = 0, drawn = 0, culled = 0;
+    std::uint64_t degenerate = 0, dropped = 0, clipped = 0, outside = 0, between_samples = 0, drawn = 0, culled = 0;
     std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during setup
 };
 
@@ -350,6 +350,7 @@ private:
             stats.triangles_dropped += chunk_counts[chunk].dropped;
             stats.triangles_clipped += chunk_counts[chunk].clipped;
             stats.triangles_outside += chunk_counts[chunk].outside;
+            stats.triangles_between_samples += chunk_counts[chunk].between_samples;
             stats.triangles_drawn += chunk_counts[chunk].drawn;
             stats.triangles_culled += chunk_counts[chunk].culled;
             count_point_evaluations(chunk_counts[chunk].lit_points, stats);
@@ -470,8 +471,10 @@ private:
             ++counts.drawn;
         } else if (!any_area) {
             ++counts.degenerate;
+        } else if (meets_image(polygon)) {
+            ++counts.between_samples;
         } else {
-            ++counts.outside;
+            ++counts.outside;  // within the guard band, beyond the image's border
         }
     }
 
@@ -484,10 +487,12 @@ private:
         const SnappedPoint b = snap(column_[tri[1]], row_[tri[1]]);
         const SnappedPoint c = snap(column_[tri[2]], row_[tri[2]]);
         if (!setup_coverage(a, b, c, frame_.rows, frame_.columns, draw.coverage)) {
+            // Its corners are inside the image: a triangle of non-zero area
+            // that fails here has no sample centre in its bounding box.
             if (draw.coverage.area2 == 0) {
                 ++counts.degenerate;
             } else {
-                ++counts.outside;
+                ++counts.between_samples;
             }
             return;
         }
@@ -512,6 +517,38 @@ private:
         }
         out.push_back(draw);
         ++counts.drawn;
+    }
+
+    // Whether a clipped polygon (convex, in pixel coordinates) overlaps the
+    // image rectangle: separating axes are the rectangle's two and the
+    // polygon's edges, each with every rectangle corner strictly outside.
+    bool meets_image(const ClipPolygon<Real>& polygon) const {
+        const double width = frame_.columns, height = frame_.rows;
+        double column_min = polygon.vertices[0].column, column_max = column_min;
+        double row_min = polygon.vertices[0].row, row_max = row_min;
+        double twice_area = 0.0;
+        for (std::size_t i = 0; i < polygon.count; ++i) {
+            const ClipVertex<Real>& a = polygon.vertices[i];
+            const ClipVertex<Real>& b = polygon.vertices[(i + 1) % polygon.count];
+            column_min = std::min(column_min, a.column);
+            column_max = std::max(column_max, a.column);
+            row_min = std::min(row_min, a.row);
+            row_max = std::max(row_max, a.row);
+            twice_area += a.column * b.row - b.column * a.row;
+        }
+        if (column_max < 0.0 || column_min > width || row_max < 0.0 || row_min > height) return false;
+        const double corners[4][2] = {{0.0, 0.0}, {width, 0.0}, {width, height}, {0.0, height}};
+        for (std::size_t i = 0; i < polygon.count; ++i) {
+            const ClipVertex<Real>& a = polygon.vertices[i];
+            const ClipVertex<Real>& b = polygon.vertices[(i + 1) % polygon.count];
+            bool all_outside = true;
+            for (const auto& corner : corners) {
+                const double side = (b.column - a.column) * (corner[1] - a.row) - (b.row - a.row) * (corner[0] - a.column);
+                all_outside = all_outside && (twice_area > 0.0 ? side < 0.0 : side > 0.0);
+            }
+            if (all_outside) return false;
+        }
+        return true;
     }
 
     // A back face: its vertices run clockwise seen from the eye (for an

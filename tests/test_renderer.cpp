@@ -71,6 +71,7 @@ void check_same_stats(const RenderStats& a, const RenderStats& b) {
     CHECK(a.triangles_dropped == b.triangles_dropped);
     CHECK(a.triangles_clipped == b.triangles_clipped);
     CHECK(a.triangles_outside == b.triangles_outside);
+    CHECK(a.triangles_between_samples == b.triangles_between_samples);
     CHECK(a.triangles_drawn == b.triangles_drawn);
     CHECK(a.samples_covered == b.samples_covered);
     CHECK(a.samples_shaded == b.samples_shaded);

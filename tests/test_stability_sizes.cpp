@@ -26,7 +26,26 @@ TEST_CASE("1 x 1 image: the pixel shows the triangle covering its centre, else t
         const RenderResult missed = render(scene, options);
         CHECK(missed.image.at(0, 0) == stability::kBackground);
         CHECK(missed.stats.samples_shaded == 0);
+        CHECK(missed.stats.triangles_between_samples == 1);  // in the image, between sample centres
+        CHECK(missed.stats.triangles_outside == 0);
     }
+}
+
+TEST_CASE("a triangle covering no sample is counted between samples when in the image, else outside") {
+    Scene scene = stability::pixel_exact_scene(4, 4);
+    // A sliver along rows 0.6-0.9 from column -2 to 0.4: clipped at the left
+    // border, its part in the image (columns 0-0.4) holds no centre.
+    add_triangle(scene.mesh, at_pixel(scene, -2.0, 0.6, 8), at_pixel(scene, 0.4, 0.6, 8), at_pixel(scene, 0.4, 0.9, 8));
+    const RenderResult straddling = render(scene, RenderOptions::exact());
+    CHECK(straddling.stats.triangles_clipped == 1);
+    CHECK(straddling.stats.triangles_between_samples == 1);
+    CHECK(straddling.stats.triangles_outside == 0);
+    CHECK(straddling.stats.samples_covered == 0);
+    // The same shape moved to columns -3 to -0.6: beyond the border, within the guard band.
+    scene.mesh.positions = {at_pixel(scene, -3.0, 0.6, 8), at_pixel(scene, -0.6, 0.6, 8), at_pixel(scene, -0.6, 0.9, 8)};
+    const RenderResult beyond = render(scene, RenderOptions::exact());
+    CHECK(beyond.stats.triangles_outside == 1);
+    CHECK(beyond.stats.triangles_between_samples == 0);
 }
 
 TEST_CASE("16384 x 16384 image with a tiny mesh: the triangle's pixels and nothing else, no overflow") {

@@ -142,6 +142,7 @@ struct RenderStats {
     std::uint64_t triangles_dropped = 0;     ///< seed border rule: a vertex outside the image or behind the eye
     std::uint64_t triangles_clipped = 0;     ///< crossed the image border or the near plane and were clipped
     std::uint64_t triangles_outside = 0;     ///< entirely outside the view: nothing to draw
+    std::uint64_t triangles_between_samples = 0;  ///< in the view, but no sample centre inside (smaller than the sample spacing)
     std::uint64_t triangles_drawn = 0;       ///< reached the fill (possibly as several clipped pieces)
     std::uint64_t samples_covered = 0;       ///< samples inside drawn triangles, overdraw included (a sample is a pixel when samples_per_axis = 1)
     std::uint64_t samples_shaded = 0;        ///< samples shaded and written: samples_covered with Overdraw::shade_all
