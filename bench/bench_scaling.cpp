@@ -4,7 +4,13 @@
 // Two sweeps over the llvmpipe comparison's dented, coloured icosphere
 // (bench/llvmpipe/scenes.cpp, three lights):
 //   * triangles: 20 f^2 triangles for f = 7 .. 447 (980 .. 3,996,180) at 1024 x 1024;
-//   * pixels:    the 15,680-triangle sphere at 256^2 .. 4096^2.
+//   * pixels:    the 15,680-triangle sphere at 256^2 .. 4096^2;
+// and two more at one size each:
+//   * lighting:  the 15,680-triangle sphere at 1024^2, flat/Gouraud/Phong x
+//                ambient, diffuse, specular and full lighting;
+//   * meshes:    each mesh of ../shared/assets at 512^2 (with the cameras of
+//                its README), Gouraud and Phong; skipped, saying so, when the
+//                folder is absent.
 // Each benchmark reports the counters `triangles` and `samples` (samples shaded)
 // so bench/scaling_slopes.py can fit time against both on log-log axes.
 //
@@ -19,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "asset_scenes.hpp"
 #include "phongrast/render.hpp"
 #include "scenes.hpp"
 
@@ -35,9 +42,8 @@ const phongrast::Scene& cached_scene(int frequency, int rows) {
     return slot->scene;
 }
 
-void render_case(benchmark::State& state, int frequency, int rows, phongrast::Shader shader, int threads) {
-    phongrast::Scene scene = cached_scene(frequency, rows);  // a copy: the shader differs per case
-    scene.shader = shader;
+void render_case(benchmark::State& state, const phongrast::Scene& scene, int threads) {
+    const int rows = scene.image.rows;
     phongrast::RenderOptions options = phongrast::RenderOptions::exact();
     options.threads = threads;
     phongrast::RenderStats stats;
@@ -49,7 +55,7 @@ void render_case(benchmark::State& state, int frequency, int rows, phongrast::Sh
     }
     state.counters["triangles"] = static_cast<double>(scene.mesh.triangles.size());
     state.counters["samples"] = static_cast<double>(stats.samples_shaded);
-    state.counters["pixels"] = static_cast<double>(rows) * rows;
+    state.counters["pixels"] = static_cast<double>(rows) * scene.image.columns;
 }
 
 void register_case(const std::string& sweep, int frequency, int rows, phongrast::Shader shader, int threads) {
@@ -57,7 +63,16 @@ void register_case(const std::string& sweep, int frequency, int rows, phongrast:
                              "/triangles:" + std::to_string(20 * frequency * frequency) +
                              "/rows:" + std::to_string(rows);
     benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
-        render_case(state, frequency, rows, shader, threads);
+        phongrast::Scene scene = cached_scene(frequency, rows);  // a copy: the shader differs per case
+        scene.shader = shader;
+        render_case(state, scene, threads);
+    })->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(0.2);
+}
+
+/// A case of the lighting or meshes sweep: a ready scene under its own name.
+void register_scene(const std::string& name, const phongrast::Scene& scene, int threads) {
+    benchmark::RegisterBenchmark(name.c_str(), [scene, threads](benchmark::State& state) {
+        render_case(state, scene, threads);
     })->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(0.2);
 }
 
@@ -82,6 +97,32 @@ int main(int argc, char** argv) {
         for (int threads : {1, 2}) {
             for (int frequency : frequencies) register_case("triangles", frequency, 1024, shader, threads);
             for (int rows : sides) register_case("pixels", 28, rows, shader, threads);
+        }
+    }
+    const phongrast::Lighting lightings[] = {phongrast::Lighting::only_ambient(), phongrast::Lighting::only_diffuse(),
+                                             phongrast::Lighting::only_specular(), phongrast::Lighting::full()};
+    for (phongrast::Shader shader : {phongrast::Shader::flat, phongrast::Shader::gouraud, phongrast::Shader::phong}) {
+        for (const phongrast::Lighting& lighting : lightings) {
+            for (int threads : {1, 2}) {
+                phongrast::Scene scene = cached_scene(28, 1024);
+                scene.shader = shader;
+                scene.lighting = lighting;
+                register_scene("lighting/" + std::string(phongrast::to_string(shader)) + "/threads:" +
+                                   std::to_string(threads) + "/lighting:" + phongrast::to_string(lighting) +
+                                   "/triangles:15680/rows:1024",
+                               scene, threads);
+            }
+        }
+    }
+    for (llvmpipe_compare::NamedScene& named : llvmpipe_compare::asset_scenes(512)) {
+        for (phongrast::Shader shader : {phongrast::Shader::gouraud, phongrast::Shader::phong}) {
+            for (int threads : {1, 2}) {
+                named.scene.shader = shader;
+                register_scene("meshes/" + std::string(phongrast::to_string(shader)) + "/threads:" +
+                                   std::to_string(threads) + "/mesh:" + named.name + "/triangles:" +
+                                   std::to_string(named.scene.mesh.triangles.size()) + "/rows:512",
+                               named.scene, threads);
+            }
         }
     }
     int count = static_cast<int>(arguments.size());

@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Cost model from bench_scaling's JSON output: log-log slopes of render time
 against triangles (the "triangles" sweep, image fixed) and against shaded
-samples (the "pixels" sweep, mesh fixed), per shader and thread count, and the
-2-thread speed-up of every case.
+samples (the "pixels" sweep, mesh fixed), per shader and thread count; the
+time and cost per sample of every case of the "lighting" (shader x lighting)
+and "meshes" (../shared/assets) sweeps; and the 2-thread speed-up of every
+case.
 
 A slope of 1 means time proportional to that quantity; below 1, a fixed cost
 (or the other quantity) still matters over that range.
@@ -38,12 +40,17 @@ def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     groups = defaultdict(list)  # (sweep, shader, threads) -> [(triangles, samples, rows, ms)]
+    cases = []  # lighting and meshes sweeps: (sweep, shader, what, threads, triangles, samples, rows, ms)
     for run in data["benchmarks"]:
         if run.get("run_type", "iteration") != "iteration":
             continue
         parts = run["name"].split("/")
         sweep, shader, threads = parts[0], parts[1], int(parts[2].split(":")[1])
         rows = int(next(p for p in parts if p.startswith("rows:")).split(":")[1])
+        if sweep in ("lighting", "meshes"):
+            what = parts[3].split(":", 1)[1]
+            cases.append((sweep, shader, what, threads, run["triangles"], run["samples"], rows, to_ms(run)))
+            continue
         groups[(sweep, shader, threads)].append((run["triangles"], run["samples"], rows, to_ms(run)))
 
     context = data.get("context", {})
@@ -71,6 +78,14 @@ def main():
         last = max(runs, key=lambda r: r[0] if sweep == "triangles" else r[2])
         print(f"| {sweep} | {shader} | {threads} | {rng} | {s_tri} | {s_samp} | "
               f"{last[3] / last[0] * 1e6:.0f} | {last[3] * 1e6 / max(last[1], 1):.1f} |")
+
+    if cases:
+        print()
+        print("| sweep | shader | lighting or mesh | threads | triangles | image | samples shaded | ms | ns per sample |")
+        print("|---|---|---|---:|---:|---|---:|---:|---:|")
+        for sweep, shader, what, threads, tri, samples, rows, ms in cases:
+            print(f"| {sweep} | {shader} | {what} | {threads} | {int(tri):,} | {rows}^2 | {int(samples):,} | "
+                  f"{ms:.2f} | {ms * 1e6 / max(samples, 1):.1f} |")
 
     print()
     print("| case | 1 thread ms | 2 threads ms | speed-up |")
