@@ -15,7 +15,8 @@
 // so bench/scaling_slopes.py can fit time against both on log-log axes.
 //
 // Usage: bench_scaling [--quick] [Google Benchmark flags]
-//   --quick: a subset that runs in about a minute (up to 256k triangles and 2048^2).
+//   --quick: the triangle and pixel sweeps up to 256k triangles and 2048^2 (the lighting
+//            and meshes sweeps run in full either way): a few minutes on 2 cores.
 #include <benchmark/benchmark.h>
 
 #include <cstring>

@@ -15,8 +15,9 @@
 # 2. The speed steps (bench_speed_once --steps, docs/performance.md): every
 #    layer shaded with the baseline kernels, automatic overdraw, AVX2 kernels,
 #    round-robin in one process per row; medians and ratios to the first.
-# 3. bench_scaling (Google Benchmark): time against triangles and pixels, and
-#    the log-log slopes (bench/scaling_slopes.py).
+# 3. bench_scaling (Google Benchmark): time against triangles and pixels with
+#    the log-log slopes, shader x lighting, and the meshes of ../shared/assets
+#    (bench/scaling_slopes.py makes the tables).
 #
 # Needs the packages of cmake/debian-packages.txt (OSMesa for step 1, Google
 # Benchmark for step 3) and python3 for merging tables and fitting slopes
