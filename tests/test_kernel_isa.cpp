@@ -2,7 +2,6 @@
 // baseline ones: the same image bit for bit in every shader, mode, precision
 // and effect set, so the picture does not depend on the CPU.
 #include <cstdint>
-#include <cstring>
 #include <random>
 
 #include <catch2/catch.hpp>
@@ -10,15 +9,12 @@
 #include "fill_types.hpp"
 #include "phongrast/render.hpp"
 #include "test_meshes.hpp"
+#include "test_render_modes.hpp"
 
 using namespace phongrast;
+using test_render_modes::same_bits;
 
 namespace {
-
-bool same_bits(const Image& a, const Image& b) {
-    return a.pixels.size() == b.pixels.size() &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
-}
 
 /// Restores the automatic choice however the test ends.
 struct IsaOverride {
@@ -68,23 +64,14 @@ TEST_CASE("AVX2 kernels paint the baseline kernels' image bit for bit") {
             scene.shader = shader;
             for (Lighting lighting : {Lighting::full(), Lighting::only_ambient(), Lighting::only_specular()}) {
                 scene.lighting = lighting;
-                for (bool seed_mode : {false, true}) {
-                    for (Precision precision : {Precision::single_float, Precision::double_float}) {
-                        for (bool specialize : {true, false}) {
-                            RenderOptions options = seed_mode ? RenderOptions::seed() : RenderOptions::exact();
-                            options.precision = precision;
-                            options.specialize_effects = specialize;
-                            const RenderResult baseline = render_with(detail::KernelIsa::baseline, scene, options);
-                            const RenderResult avx2 = render_with(detail::KernelIsa::avx2, scene, options);
-                            INFO("seed " << seed << ", " << to_string(shader) << ", " << to_string(lighting)
-                                         << (seed_mode ? ", seed mode" : ", exact")
-                                         << (precision == Precision::double_float ? ", double" : ", float")
-                                         << (specialize ? ", specialised" : ", general"));
-                            REQUIRE(baseline.stats.samples_shaded > 1000);
-                            CHECK(same_bits(baseline.image, avx2.image));
-                            CHECK(baseline.stats.samples_shaded == avx2.stats.samples_shaded);
-                        }
-                    }
+                for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+                    const RenderResult baseline = render_with(detail::KernelIsa::baseline, scene, mode.options);
+                    const RenderResult avx2 = render_with(detail::KernelIsa::avx2, scene, mode.options);
+                    INFO("seed " << seed << ", " << to_string(shader) << ", " << to_string(lighting) << ", "
+                                 << mode.name);
+                    REQUIRE(baseline.stats.samples_shaded > 1000);
+                    CHECK(same_bits(baseline.image, avx2.image));
+                    CHECK(baseline.stats.samples_shaded == avx2.stats.samples_shaded);
                 }
             }
         }

@@ -3,7 +3,6 @@
 // for bit, the same coverage, and fewer samples shaded wherever triangles
 // overlap; Overdraw::automatic picks shade_visible for per-pixel lighting only.
 #include <cstdint>
-#include <cstring>
 #include <random>
 #include <string>
 
@@ -11,18 +10,15 @@
 
 #include "phongrast/render.hpp"
 #include "test_meshes.hpp"
+#include "test_render_modes.hpp"
 
 using namespace phongrast;
+using test_render_modes::same_bits;
 
 namespace {
 
 /// No lit colour of these scenes lands exactly on it, so a pixel equal to it was never written.
 const glm::vec3 kBackground{0.3141f, 0.2718f, 0.1618f};
-
-bool same_bits(const Image& a, const Image& b) {
-    return a.pixels.size() == b.pixels.size() &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
-}
 
 std::uint64_t count_written(const Image& image) {
     std::uint64_t written = 0;
@@ -67,27 +63,18 @@ TEST_CASE("shade_visible paints the same image as shade_all, bit for bit, in eve
         Scene scene = random_scene(seed);
         for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
             scene.shader = shader;
-            for (bool seed_mode : {false, true}) {
-                for (Precision precision : {Precision::single_float, Precision::double_float}) {
-                    for (bool specialize : {true, false}) {
-                        RenderOptions options = seed_mode ? RenderOptions::seed() : RenderOptions::exact();
-                        options.precision = precision;
-                        options.specialize_effects = specialize;
-                        options.threads = 1 + static_cast<int>(seed % 2);
-                        const RenderResult all = render(scene, with_overdraw(options, Overdraw::shade_all));
-                        const RenderResult visible = render(scene, with_overdraw(options, Overdraw::shade_visible));
-                        INFO("seed " << seed << ", " << to_string(shader) << (seed_mode ? ", seed mode" : ", exact")
-                                     << (precision == Precision::double_float ? ", double" : ", float")
-                                     << (specialize ? ", specialised" : ", general"));
-                        CHECK(same_bits(all.image, visible.image));
-                        CHECK(all.stats.samples_covered == visible.stats.samples_covered);
-                        CHECK(all.stats.samples_shaded == all.stats.samples_covered);
-                        // Each written pixel shaded exactly once; the torus overlaps itself.
-                        CHECK(visible.stats.samples_shaded == count_written(visible.image));
-                        CHECK(visible.stats.samples_shaded < all.stats.samples_shaded);
-                        CHECK(visible.stats.nonfinite_values_replaced == 0);
-                    }
-                }
+            for (test_render_modes::RenderMode mode : test_render_modes::preset_precision_kernel_modes()) {
+                mode.options.threads = 1 + static_cast<int>(seed % 2);
+                const RenderResult all = render(scene, with_overdraw(mode.options, Overdraw::shade_all));
+                const RenderResult visible = render(scene, with_overdraw(mode.options, Overdraw::shade_visible));
+                INFO("seed " << seed << ", " << to_string(shader) << ", " << mode.name);
+                CHECK(same_bits(all.image, visible.image));
+                CHECK(all.stats.samples_covered == visible.stats.samples_covered);
+                CHECK(all.stats.samples_shaded == all.stats.samples_covered);
+                // Each written pixel shaded exactly once; the torus overlaps itself.
+                CHECK(visible.stats.samples_shaded == count_written(visible.image));
+                CHECK(visible.stats.samples_shaded < all.stats.samples_shaded);
+                CHECK(visible.stats.nonfinite_values_replaced == 0);
             }
         }
     }

@@ -9,7 +9,6 @@
 // allocator, not counted here.)
 #include <atomic>
 #include <cstdlib>
-#include <cstring>
 #include <new>
 #include <string>
 #include <vector>
@@ -18,6 +17,7 @@
 
 #include "phongrast/render.hpp"
 #include "test_meshes.hpp"
+#include "test_render_modes.hpp"
 
 namespace {
 std::atomic<bool> counting{false};
@@ -57,11 +57,6 @@ long allocations_during(Frame&& frame) {
     frame();
     counting = false;
     return allocations.load();
-}
-
-bool same_bits(const Image& a, const Image& b) {
-    return a.rows == b.rows && a.columns == b.columns && a.pixels.size() == b.pixels.size() &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
 }
 
 void check_same_stats(const RenderStats& a, const RenderStats& b) {
@@ -141,7 +136,7 @@ TEST_CASE("a Renderer paints what render() paints, frame after frame, whatever c
         const RenderResult& reused = renderer.render(frame.scene);
         const RenderResult fresh = render(frame.scene, frame.options);
         REQUIRE(fresh.stats.samples_shaded > 100);
-        CHECK(same_bits(reused.image, fresh.image));
+        CHECK(test_render_modes::same_bits(reused.image, fresh.image));
         check_same_stats(reused.stats, fresh.stats);
     }
 }
