@@ -21,7 +21,7 @@
 
 namespace phongrast::detail {
 
-/// One triangle ready to fill: 140 bytes in float. The varyings are not
+/// One triangle ready to fill: 144 bytes in float on 64-bit targets. The varyings are not
 /// copied: they stay in the mesh's vertex array (or, for the corners clipping
 /// creates, in the draw list's own storage), and the triangle points to them.
 template <typename Real>

@@ -50,7 +50,9 @@ enum class Visibility {
 };
 /// What painter's order spends on samples that a later triangle paints over.
 /// Whichever is chosen, the image is the same bit for bit: a sample's colour
-/// depends only on the triangle that paints it last.
+/// depends only on the triangle that paints it last. The depth buffer
+/// (Visibility::depth_buffer) always shades as it tests: this applies to
+/// painter's order only.
 enum class Overdraw {
     shade_all,      ///< the classic painter's fill: every triangle shades every sample it covers
     shade_visible,  ///< per band of rows, first record which triangle paints each sample last
@@ -60,8 +62,6 @@ enum class Overdraw {
                     ///< with diffuse or specular light: measured in docs/performance.md),
                     ///< shade_all elsewhere
 };
-/// The depth buffer (Visibility::depth_buffer) always shades as it tests: Overdraw applies to painter's order.
-
 enum class Precision { single_float, double_float };
 /// Where the samples_per_axis^2 samples of a pixel lie (box-filtered either way).
 enum class SamplePattern {
