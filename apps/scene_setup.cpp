@@ -9,6 +9,7 @@
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/obj_file.hpp"
 #include "phongrast/io/scene_file.hpp"
+#include "phongrast/smooth_normals.hpp"
 
 namespace phongrast::cli {
 namespace {
@@ -145,6 +146,10 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         scene.camera.sensor_height = flags.sensor[0];
         scene.camera.sensor_width = flags.sensor[1];
     }
+    NormalOptions normal_options;
+    normal_options.sharing = flags.smooth == "position" ? NormalSharing::position : NormalSharing::vertex_index;
+    normal_options.crease_degrees = flags.crease;
+    if (!normal_options.is_contract()) scene.mesh = with_normals(scene.mesh, normal_options);
     try {
         make_camera_frame(scene.camera, scene.image.rows, scene.image.columns);
     } catch (const std::invalid_argument& error) {
@@ -160,8 +165,10 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
     prepared.options.samples_per_axis = flags.samples;
 
     if (auto_framed && !messages.quiet()) {
-        messages.note("no scene file: framed " + mesh_path +
-                      " automatically. This scene file reproduces the picture:\n" +
+        std::ostringstream normal_flags;
+        if (!normal_options.is_contract()) normal_flags << " with --smooth " << flags.smooth << " --crease " << flags.crease;
+        messages.note("no scene file: framed " + mesh_path + " automatically. This scene file reproduces the picture" +
+                      normal_flags.str() + ":\n" +
                       io::scene_to_json(scene, fs::absolute(mesh_path).lexically_normal().string()));
     }
     return prepared;

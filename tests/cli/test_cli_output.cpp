@@ -189,3 +189,34 @@ TEST_CASE("generate writes a closed, outward-facing, coloured mesh, the one in a
     CHECK(signed_volume > 1.0);  // counter-clockwise seen from outside
     CHECK(read_text(folder.file("knot.obj")) == read_text(data_folder + "/../../../assets/default.obj"));
 }
+
+TEST_CASE("render with smooth normals by position and a 30-degree crease draws a shared-vertex cube exactly like a cube with separate faces") {
+    TemporaryFolder folder;
+    std::string corners;
+    for (int i = 0; i < 8; ++i) corners += "v " + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " +
+                                           std::to_string((i >> 2) & 1) + "\n";
+    const int quads[6][4] = {{1, 3, 4, 2}, {5, 6, 8, 7}, {1, 2, 6, 5}, {3, 7, 8, 4}, {1, 5, 7, 3}, {2, 4, 8, 6}};
+    std::string shared = corners;
+    std::string faceted = corners;  // every face its own copies of its corners
+    for (int f = 0; f < 6; ++f) {
+        shared += "f " + std::to_string(quads[f][0]) + " " + std::to_string(quads[f][1]) + " " +
+                  std::to_string(quads[f][2]) + " " + std::to_string(quads[f][3]) + "\n";
+        for (int k = 0; k < 4; ++k) {
+            const int corner = quads[f][k] - 1;
+            faceted += "v " + std::to_string(corner & 1) + " " + std::to_string((corner >> 1) & 1) + " " +
+                       std::to_string((corner >> 2) & 1) + "\n";
+        }
+        const int base = 9 + 4 * f;
+        faceted += "f " + std::to_string(base) + " " + std::to_string(base + 1) + " " + std::to_string(base + 2) +
+                   " " + std::to_string(base + 3) + "\n";
+    }
+    folder.write("cube.obj", shared);
+    folder.write("faceted.obj", faceted);
+    const std::string common = " --shader gouraud --size 48x48 --eye 2.5,1.8,3.1 --quiet";
+    REQUIRE(run_cli(folder, "render cube.obj -o creased.exr --smooth position --crease 30" + common).status == 0);
+    REQUIRE(run_cli(folder, "render faceted.obj -o faceted.exr" + common).status == 0);
+    REQUIRE(run_cli(folder, "render cube.obj -o contract.exr" + common).status == 0);
+    const Image creased = io::read_image(folder.file("creased.exr"));
+    CHECK(creased.pixels == io::read_image(folder.file("faceted.exr")).pixels);
+    CHECK(creased.pixels != io::read_image(folder.file("contract.exr")).pixels);
+}
