@@ -19,10 +19,12 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "aov_pass.hpp"
 #include "clipping.hpp"
 #include "depth_sort.hpp"
 #include "fill_types.hpp"
 #include "normals_scratch.hpp"
+#include "progress_monitor.hpp"
 #include "phongrast/render.hpp"
 #include "raster.hpp"
 #include "scene_analysis.hpp"
@@ -158,15 +160,16 @@ public:
     /// sample_offset: where in each pixel, relative to its centre, this render
     /// samples (in pixels); the geometry is shifted by minus it (rotated grid).
     Pipeline(const Scene& scene, const RenderOptions& options, int rows, int columns, FrameBuffers<Real>& buffers,
-             glm::dvec2 sample_offset = glm::dvec2(0.0))
-        : scene_(scene), options_(options),
+             ProgressMonitor& progress, glm::dvec2 sample_offset = glm::dvec2(0.0))
+        : scene_(scene), options_(options), progress_(progress),
           frame_(make_camera_frame(scene.camera, rows, columns)),
           near_(scene.camera.focal * kNearPlaneOverFocal), sample_offset_(sample_offset), buffers_(buffers),
           rig_(buffers.rig), camera_depth_(buffers.camera_depth), column_(buffers.column), row_(buffers.row),
           varyings_(buffers.varyings) {}
 
-    /// Renders into `image` (resized to the frame, its memory reused).
-    void run(RenderStats& stats, Image& image) {
+    /// Renders into `image` (resized to the frame, its memory reused), and
+    /// the extra outputs `aov_planes` asks for into `aovs`.
+    void run(RenderStats& stats, Image& image, const AovRequest& aov_planes, AovSamples& aovs) {
         effects_ = find_effects(scene_);
         stats.effects = effects_;
         if (options_.back_faces == BackFaces::cull_when_hidden) {
@@ -186,7 +189,8 @@ public:
         }
         painter_order();
         set_up_triangles(stats);
-        fill(stats, image);
+        fill(stats, image, aov_planes.any() ? 0.9 : 1.0);
+        if (aov_planes.any()) fill_aovs(aov_planes, aovs);
     }
 
 private:
@@ -195,7 +199,7 @@ private:
         const Mesh& mesh = scene_.mesh;
         const std::size_t count = mesh.positions.size();
         // Ambient-only scenes never look at a normal: do not compute any.
-        const bool need_normals = effects_.normals || !options_.specialize_effects;
+        const bool need_normals = effects_.normals || !options_.specialize_effects || options_.aovs.normal;
         if (need_normals && mesh.normals.empty()) {
             calculate_normals_into(mesh.positions, mesh.triangles, buffers_.normals_scratch, buffers_.normals);
         }
@@ -205,8 +209,10 @@ private:
         column_.resize(count);
         row_.resize(count);
         varyings_.resize(count);
+        progress_.begin_stage(0.0, 0.1, (count + 4095) / 4096);
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096),
                           [&](const tbb::blocked_range<std::size_t>& range) {
+            if (progress_.cancelled()) return;
             for (std::size_t i = range.begin(); i != range.end(); ++i) {
                 const glm::dvec3 camera = frame_.camera_from_world(mesh.positions[i]);
                 camera_depth_[i] = camera.z;
@@ -225,7 +231,9 @@ private:
                 v.color = mesh.colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(mesh.colors[i]);
                 v.lit = Vec3<Real>(Real(0));
             }
+            progress_.piece_done();
         });
+        progress_.throw_if_cancelled();
     }
 
     // Culling is only invisible when every front face is drawn whole: a front
@@ -333,7 +341,9 @@ private:
         if (chunk_clip_vertices.size() < chunks) chunk_clip_vertices.resize(chunks);
         if (buffers_.setup_vectors.size() < chunks) buffers_.setup_vectors.resize(chunks);
         chunk_counts.assign(chunks, SetupCounts{});
+        progress_.begin_stage(0.1, 0.4, chunks);
         tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+            if (progress_.cancelled()) return;
             const std::size_t begin = chunk * kSetupChunk;
             const std::size_t end = std::min(order.size(), begin + kSetupChunk);
             chunk_draws[chunk].clear();
@@ -344,7 +354,9 @@ private:
                 set_up_triangle(order[k], chunk_draws[chunk], chunk_clip_vertices[chunk], chunk_counts[chunk],
                                 buffers_.setup_vectors[chunk]);
             }
+            progress_.piece_done();
         });
+        progress_.throw_if_cancelled();
         for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
             stats.triangles_degenerate += chunk_counts[chunk].degenerate;
             stats.triangles_dropped += chunk_counts[chunk].dropped;
@@ -401,7 +413,7 @@ private:
             (varyings_[tri[0]].position + varyings_[tri[1]].position + varyings_[tri[2]].position) / Real(3);
         if (inside_image && camera_depth_[tri[0]] >= near_ && camera_depth_[tri[1]] >= near_ &&
             camera_depth_[tri[2]] >= near_) {
-            set_up_unclipped(tri, centroid, out, counts, vectors);
+            set_up_unclipped(source, centroid, out, counts, vectors);
             return;
         }
 
@@ -454,6 +466,7 @@ private:
                 draw.depth[i] = static_cast<Real>(corner[i]->depth);
             }
             draw.centroid = centroid;
+            draw.source = source;
             out.push_back(draw);
             any_drawn = true;
         }
@@ -480,8 +493,9 @@ private:
 
     // The common case, with nothing to clip: no polygon, one draw triangle
     // straight from the vertex arrays.
-    void set_up_unclipped(const Triangle& tri, const Vec3<Real>& centroid, std::vector<DrawTriangle<Real>>& out,
+    void set_up_unclipped(std::uint32_t source, const Vec3<Real>& centroid, std::vector<DrawTriangle<Real>>& out,
                           SetupCounts& counts, LightVectorsAt<Real>& vectors) const {
+        const Triangle& tri = scene_.mesh.triangles[source];
         DrawTriangle<Real> draw;
         const SnappedPoint a = snap(column_[tri[0]], row_[tri[0]]);
         const SnappedPoint b = snap(column_[tri[1]], row_[tri[1]]);
@@ -504,6 +518,7 @@ private:
             draw.depth[i] = static_cast<Real>(camera_depth_[index[i]]);
         }
         draw.centroid = centroid;
+        draw.source = source;
         if (scene_.shader == Shader::flat) {
             const Vec3<Real> lit = flat_color(tri, centroid, vectors);
             for (Vec3<Real>& corner_lit : draw.lit) corner_lit = lit;
@@ -659,7 +674,8 @@ private:
     }
 
     // ---- Fill ---------------------------------------------------------------------
-    void fill(RenderStats& stats, Image& image) {
+    /// `progress_end`: the fraction of the render done when the fill is.
+    void fill(RenderStats& stats, Image& image, double progress_end) {
         image.rows = frame_.rows;
         image.columns = frame_.columns;
         image.pixels.assign(static_cast<std::size_t>(frame_.rows) * static_cast<std::size_t>(frame_.columns),
@@ -724,7 +740,9 @@ private:
         if (shade_visible && buffers_.band_layers.size() < static_cast<std::size_t>(bands)) {
             buffers_.band_layers.resize(bands);
         }
+        progress_.begin_stage(0.4, progress_end, static_cast<std::size_t>(bands));
         tbb::parallel_for(0, bands, [&](int band) {
+            if (progress_.cancelled()) return;
             FillTarget<Real> target{image, depth_buffer, band * kBandRows,
                                     std::min(frame_.rows, (band + 1) * kBandRows), depth_test, 0, 0};
             const DrawTriangle<Real>* const* draws = binned.data() + band_start[band];
@@ -741,13 +759,32 @@ private:
             }
             shaded[band] = target.samples;
             replaced[band] = target.replaced;
+            progress_.piece_done();
         });
+        progress_.throw_if_cancelled();
         for (int band = 0; band < bands; ++band) {
             stats.samples_covered += covered[band];
             stats.samples_shaded += shaded[band];
             stats.nonfinite_values_replaced += replaced[band];
         }
         count_sample_evaluations(stats.samples_shaded, stats);
+    }
+
+    /// The extra outputs, from the bins the fill just used.
+    void fill_aovs(const AovRequest& planes, AovSamples& out) const {
+        out.reset(frame_.rows, frame_.columns, planes);
+        AovPassInput<Real> input;
+        input.binned = buffers_.binned.data();
+        input.band_start = buffers_.band_start.data();
+        input.bands = (frame_.rows + kBandRows - 1) / kBandRows;
+        input.band_rows = kBandRows;
+        input.shader = scene_.shader;
+        input.perspective = options_.interpolation == Interpolation::perspective_correct;
+        input.depth_buffer = options_.visibility == Visibility::depth_buffer ? buffers_.depth_buffer.data() : nullptr;
+        input.triangles = &scene_.mesh.triangles;
+        input.vertices = &varyings_;
+        input.frame = &frame_;
+        run_aov_pass(input, planes, out, progress_);
     }
 
     /// Overdraw::automatic picks shade_visible only for per-sample lighting:
@@ -809,6 +846,7 @@ private:
 
     const Scene& scene_;
     RenderOptions options_;
+    ProgressMonitor& progress_;
     CameraFrame frame_;
     double near_;
     glm::dvec2 sample_offset_;
@@ -892,6 +930,7 @@ struct RendererState {
     std::vector<std::pair<int, std::unique_ptr<tbb::task_arena>>> arenas;
     RenderResult result;
     Image fine, pass, sum;  ///< supersampling: the large image, or one rotated-grid pass and the running sum
+    AovSamples aov_samples;  ///< one pass's extra outputs per sample, before the resolve into result.aovs
     FrameBuffers<float> single;
     FrameBuffers<double> twice;
 
@@ -917,23 +956,30 @@ struct RendererState {
     void render(const Scene& scene) {
         const auto start = std::chrono::steady_clock::now();
         validate_render_request(scene, options);
+        ProgressMonitor progress(options.progress);
         const int factor = options.samples_per_axis;
         const int fine_rows = scene.image.rows * factor, fine_columns = scene.image.columns * factor;
+        // The planes each pass fills per sample (none unless asked: the frame is then the colour fill alone).
+        const AovRequest aov_planes =
+            options.aovs.any() ? sample_planes_for(options.aovs, factor) : AovRequest{};
+        reset_aov_planes(scene.image.rows, scene.image.columns, aov_planes, result.aovs);
         result.stats = RenderStats{};
         result.stats.triangles_in = scene.mesh.triangles.size();
         arena_for(options.threads).execute([&] {
+            // One pipeline run; `aov_factor` is its samples per pixel axis for the extra outputs' resolve.
             const auto run = [&](auto real_tag, int rows, int columns, glm::dvec2 offset, RenderStats& stats,
-                                 Image& image) {
+                                 Image& image, int aov_factor) {
                 using Real = decltype(real_tag);
-                Pipeline<Real> pipeline(scene, options, rows, columns, buffers<Real>(), offset);
-                pipeline.run(stats, image);
+                Pipeline<Real> pipeline(scene, options, rows, columns, buffers<Real>(), progress, offset);
+                pipeline.run(stats, image, aov_planes, aov_samples);
+                if (aov_planes.any()) resolve_aovs(aov_samples, aov_factor, aov_planes, result.aovs);
             };
             const auto run_in_precision = [&](int rows, int columns, glm::dvec2 offset, RenderStats& stats,
-                                              Image& image) {
+                                              Image& image, int aov_factor) {
                 if (options.precision == Precision::double_float) {
-                    run(double{}, rows, columns, offset, stats, image);
+                    run(double{}, rows, columns, offset, stats, image, aov_factor);
                 } else {
-                    run(float{}, rows, columns, offset, stats, image);
+                    run(float{}, rows, columns, offset, stats, image, aov_factor);
                 }
             };
             if (factor > 1 && options.sample_pattern == SamplePattern::rotated_grid) {
@@ -946,8 +992,9 @@ struct RendererState {
                     for (int j = 0; j < factor; ++j) {
                         RenderStats pass_stats;
                         pass_stats.triangles_in = result.stats.triangles_in;
+                        progress.set_pass(i * factor + j, factor * factor);
                         run_in_precision(scene.image.rows, scene.image.columns, rotated_grid_offset(i, j, factor),
-                                         pass_stats, pass);
+                                         pass_stats, pass, 1);
                         for (std::size_t p = 0; p < sum.pixels.size(); ++p) sum.pixels[p] += pass.pixels[p];
                         if (i == 0 && j == 0) {
                             result.stats = pass_stats;
@@ -964,12 +1011,14 @@ struct RendererState {
                 return;
             }
             if (factor == 1) {
-                run_in_precision(fine_rows, fine_columns, glm::dvec2(0.0), result.stats, result.image);
+                run_in_precision(fine_rows, fine_columns, glm::dvec2(0.0), result.stats, result.image, 1);
                 return;
             }
-            run_in_precision(fine_rows, fine_columns, glm::dvec2(0.0), result.stats, fine);
+            run_in_precision(fine_rows, fine_columns, glm::dvec2(0.0), result.stats, fine, factor);
             box_downsample(fine, factor, scene.image.rows, scene.image.columns, result.image);
         });
+        if (aov_planes.any()) finish_aovs(options.aovs, factor * factor, result.aovs);
+        progress.finish();
         result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 };
