@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
+#include "cli_run.hpp"
 #include "io_test_files.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/obj_file.hpp"
@@ -21,31 +22,6 @@ using namespace phongrast;
 namespace {
 
 const std::string data_folder = PHONGRAST_CLI_DATA;
-
-struct Run {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-/// Runs `phongrast ARGUMENTS` in `folder` and captures its exit status and output.
-Run run_cli(const TemporaryFolder& folder, const std::string& arguments) {
-    const std::string command = "cd '" + folder.file("") + "' && '" + std::string(PHONGRAST_CLI) + "' " + arguments +
-                                " > stdout.txt 2> stderr.txt";
-    const int raw = std::system(command.c_str());
-    Run run;
-    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    run.out = read_text(folder.file("stdout.txt"));
-    run.err = read_text(folder.file("stderr.txt"));
-    return run;
-}
 
 /// The library's render of a scene file, as the program should produce it in exact mode.
 RenderResult render_with_library(const std::string& scene_path) {
