@@ -6,6 +6,7 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <thread>
 
@@ -61,6 +62,19 @@ int interrupt_after(const TemporaryFolder& folder, std::vector<std::string> argu
         argv.push_back(nullptr);
         execv(program.c_str(), argv.data());
         _exit(127);
+    }
+    // Until the program has installed its handler (SigCgt in /proc lists caught signals), a SIGINT
+    // would end it before main(): starting takes a while on a busy machine (shared libraries).
+    const auto handler_installed = [child] {
+        std::ifstream status("/proc/" + std::to_string(child) + "/status");
+        std::string line;
+        while (std::getline(status, line)) {
+            if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (SIGINT - 1)) & 1;
+        }
+        return 0ull;
+    };
+    for (int tries = 0; tries < 3000 && !handler_installed(); ++tries) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     std::this_thread::sleep_for(delay);
     kill(child, SIGINT);
