@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -54,8 +55,10 @@ struct DepthSortScratch {
 /// Fills `order` with the indices 0..n-1 ordered by descending depth, equal
 /// depths in index order: what std::stable_sort with `depth[a] > depth[b]`
 /// returns. Allocates nothing once `order` and `scratch` have held as many.
+/// `poll`, if given, is called after each block of work (from whichever
+/// thread did it): the renderer's progress reports.
 inline void farthest_first_order(const std::vector<double>& depth, std::vector<std::uint32_t>& order,
-                                 DepthSortScratch& scratch) {
+                                 DepthSortScratch& scratch, const std::function<void()>& poll = nullptr) {
     using namespace depth_sort;
     const std::size_t n = depth.size();
     order.resize(n);
@@ -93,6 +96,7 @@ inline void farthest_first_order(const std::vector<double>& depth, std::vector<s
             order[i] = static_cast<std::uint32_t>(i);
             for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(key >> (pass * kDigitBits)) & (kBuckets - 1)];
         }
+        if (poll) poll();
     });
 
     std::vector<Counts>& block_counts = scratch.block_counts;
@@ -112,6 +116,7 @@ inline void farthest_first_order(const std::vector<double>& depth, std::vector<s
                 c.fill(0);
                 const auto [begin, end] = block_range(block);
                 for (std::size_t i = begin; i < end; ++i) ++c[(keys[i] >> shift) & (kBuckets - 1)];
+                if (poll) poll();
             });
         } else {
             for (std::size_t block = 0; block < blocks; ++block) block_counts[block] = first_counts[block][pass];
@@ -133,6 +138,7 @@ inline void farthest_first_order(const std::vector<double>& depth, std::vector<s
                 keys_scratch[slot] = keys[i];
                 order_scratch[slot] = order[i];
             }
+            if (poll) poll();
         });
         keys.swap(keys_scratch);
         order.swap(order_scratch);

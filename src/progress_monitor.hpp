@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <algorithm>
 #include <cstddef>
 #include <thread>
 
@@ -47,11 +48,14 @@ public:
         if (!enabled()) return;
         const std::size_t done = pieces_done_.fetch_add(1, std::memory_order_relaxed) + 1;
         if (std::this_thread::get_id() != caller_) return;
-        const auto now = std::chrono::steady_clock::now();
-        if (now - last_report_ < kInterval) return;
-        last_report_ = now;
-        const double in_pass = stage_begin_ + (stage_end_ - stage_begin_) * double(done) / double(stage_pieces_);
-        report((double(pass_index_) + in_pass) / double(pass_count_));
+        report_if_due(done);
+    }
+
+    /// Inside serial work or loops without a piece count: on the calling
+    /// thread, reports the stage's start fraction when the interval has passed.
+    void poll() {
+        if (!enabled() || std::this_thread::get_id() != caller_) return;
+        report_if_due(pieces_done_.load(std::memory_order_relaxed));
     }
 
     /// Between stages, on the calling thread: throws RenderCancelled if a report asked to stop.
@@ -70,6 +74,15 @@ private:
     // Reports come at least this often while the calling thread works (the
     // contract promises every 50 ms; a piece of work is far shorter than the difference).
     static constexpr std::chrono::milliseconds kInterval{20};
+
+    void report_if_due(std::size_t pieces_done) {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last_report_ < kInterval) return;
+        last_report_ = now;
+        const double done = double(std::min(pieces_done, stage_pieces_)) / double(stage_pieces_);
+        const double in_pass = stage_begin_ + (stage_end_ - stage_begin_) * done;
+        report((double(pass_index_) + in_pass) / double(pass_count_));
+    }
 
     void report(double fraction) {
         if (cancelled()) return;

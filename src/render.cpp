@@ -162,6 +162,7 @@ public:
     Pipeline(const Scene& scene, const RenderOptions& options, int rows, int columns, FrameBuffers<Real>& buffers,
              ProgressMonitor& progress, glm::dvec2 sample_offset = glm::dvec2(0.0))
         : scene_(scene), options_(options), progress_(progress),
+          poll_(progress.enabled() ? std::function<void()>([&progress] { progress.poll(); }) : nullptr),
           frame_(make_camera_frame(scene.camera, rows, columns)),
           near_(scene.camera.focal * kNearPlaneOverFocal), sample_offset_(sample_offset), buffers_(buffers),
           rig_(buffers.rig), camera_depth_(buffers.camera_depth), column_(buffers.column), row_(buffers.row),
@@ -201,7 +202,9 @@ private:
         // Ambient-only scenes never look at a normal: do not compute any.
         const bool need_normals = effects_.normals || !options_.specialize_effects || options_.aovs.normal;
         if (need_normals && mesh.normals.empty()) {
-            calculate_normals_into(mesh.positions, mesh.triangles, buffers_.normals_scratch, buffers_.normals);
+            progress_.begin_stage(0.0, 0.05, 1);
+            calculate_normals_into(mesh.positions, mesh.triangles, buffers_.normals_scratch, buffers_.normals,
+                                   poll_);
         }
         const std::vector<glm::vec3>& normals = mesh.normals.empty() ? buffers_.normals : mesh.normals;
 
@@ -209,7 +212,7 @@ private:
         column_.resize(count);
         row_.resize(count);
         varyings_.resize(count);
-        progress_.begin_stage(0.0, 0.1, (count + 4095) / 4096);
+        progress_.begin_stage(0.05, 0.1, (count + 4095) / 4096);
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096),
                           [&](const tbb::blocked_range<std::size_t>& range) {
             if (progress_.cancelled()) return;
@@ -325,7 +328,8 @@ private:
                 depth[t] = (camera_depth_[tri[0]] + camera_depth_[tri[1]] + camera_depth_[tri[2]]) / 3.0;
             }
         });
-        farthest_first_order(depth, buffers_.order, buffers_.sort);
+        progress_.begin_stage(0.1, 0.15, 1);
+        farthest_first_order(depth, buffers_.order, buffers_.sort, poll_);
     }
 
     // ---- Triangle setup -----------------------------------------------------------
@@ -341,7 +345,7 @@ private:
         if (chunk_clip_vertices.size() < chunks) chunk_clip_vertices.resize(chunks);
         if (buffers_.setup_vectors.size() < chunks) buffers_.setup_vectors.resize(chunks);
         chunk_counts.assign(chunks, SetupCounts{});
-        progress_.begin_stage(0.1, 0.4, chunks);
+        progress_.begin_stage(0.15, 0.4, chunks);
         tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
             if (progress_.cancelled()) return;
             const std::size_t begin = chunk * kSetupChunk;
@@ -847,6 +851,8 @@ private:
     const Scene& scene_;
     RenderOptions options_;
     ProgressMonitor& progress_;
+    /// progress_.poll(), for the serial and block loops outside this class (empty without a callback).
+    std::function<void()> poll_;
     CameraFrame frame_;
     double near_;
     glm::dvec2 sample_offset_;

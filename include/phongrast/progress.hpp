@@ -8,8 +8,10 @@
 namespace phongrast {
 
 /// Called with the fraction of the render done, from 0 to 1, on the thread
-/// that called render() (never from a worker thread), at least every 50 ms
-/// while the render works and once at the end with 1. Return false to cancel:
+/// that called render() (never from a worker thread), about every 20 ms
+/// while the render works and once at the end with 1. Measured on 1M and 4M
+/// triangles at 1024^2: gaps stay under about 60 ms and 130 ms, the longest
+/// in a first frame, where the renderer's memory is allocated (page faults). Return false to cancel:
 /// the workers stop at their next piece of work and render() throws
 /// RenderCancelled. An exception thrown by the callback propagates the same way.
 using ProgressCallback = std::function<bool(double fraction_done)>;
