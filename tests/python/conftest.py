@@ -53,10 +53,12 @@ class SeedScene:
                        phongrast.PointLight([-2.0, 0.5, 1.5], [0.2, 0.3, 0.6])]
         self.ambient = [0.3, 0.3, 0.35]
 
-    def render(self, shader, lighting="full", verts=None, colors=None, faces=None, mat=None, lights=None, **options):
+    def render(self, shader, lighting="full", verts=None, colors="scene", faces=None, mat=None, lights=None,
+               **options):
+        """render_object of this scene; any argument given replaces the scene's (colors=None: white)."""
         return phongrast.render_object(
             shader, self.focal, self.eye, self.lookat, self.up, self.bg, self.M, self.N, self.H, self.W,
-            self.verts if verts is None else verts, self.colors if colors is None else colors,
+            self.verts if verts is None else verts, self.colors if isinstance(colors, str) else colors,
             self.faces if faces is None else faces, self.mat if mat is None else mat,
             self.lights if lights is None else lights, self.ambient, lighting, **options)
 
