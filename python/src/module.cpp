@@ -32,6 +32,8 @@ malformed files raise phongrast.FileError (a ValueError) naming the file.)";
 
     // A file that cannot be read or written, or is malformed: the message names the file and the line or field.
     py::register_exception<phongrast::io::FileError>(module, "FileError", PyExc_ValueError);
+    module.attr("FileError").attr("__doc__") =
+        "A file could not be read or written, or is malformed; the message names the file and the line or field.";
     phongrast::python::bind_seed_functions(module);
     phongrast::python::bind_seed_fill(module);
     phongrast::python::bind_scene_api(module);

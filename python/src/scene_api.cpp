@@ -72,7 +72,7 @@ PyScene scene_from_dict(py::dict description, const std::string& folder) {
     py::object mesh = py::none();
     if (copy.contains("mesh") && py::isinstance<PyMesh>(copy["mesh"])) {
         mesh = copy["mesh"];
-        copy["mesh"] = "";
+        PyDict_DelItemString(copy.ptr(), "mesh");
     }
     const py::module_ json = py::module_::import("json");
     const py::object to_list = py::module_::import("builtins").attr("eval")("lambda o: o.tolist()");
@@ -159,18 +159,21 @@ views of the C++ arrays (no copy): writing into them changes the mesh.)")
         .def_property_readonly("faces", [](const PyMesh& m) {
             return view_of(m.mesh->triangles.data()->data(), m.mesh->triangles.size(), m.mesh, true);
         }, "NT x 3 uint32 view of the 0-based vertex indices.")
-        .def_property_readonly("vertex_count", [](const PyMesh& m) { return m.mesh->positions.size(); })
-        .def_property_readonly("triangle_count", [](const PyMesh& m) { return m.mesh->triangles.size(); })
+        .def_property_readonly("vertex_count", [](const PyMesh& m) { return m.mesh->positions.size(); }, "Nv.")
+        .def_property_readonly("triangle_count", [](const PyMesh& m) { return m.mesh->triangles.size(); }, "NT.")
         .def("__repr__", [](const PyMesh& m) {
             return "<phongrast.Mesh " + std::to_string(m.mesh->positions.size()) + " vertices, " +
                    std::to_string(m.mesh->triangles.size()) + " triangles>";
         });
 }
 
+/// A 3-vector property; colours (`rgb`) may also be set from one number.
 template <typename Getter, typename Setter>
-void vector_property(py::class_<PyScene>& scene, const char* name, Getter get, Setter set, const char* doc) {
+void vector_property(py::class_<PyScene>& scene, const char* name, Getter get, Setter set, const char* doc,
+                     bool rgb = false) {
     scene.def_property(name, [get](const PyScene& s) { return vec3_array(get(*s.scene)); },
-                       [set, name](PyScene& s, py::handle value) { set(*s.scene, read_vec3(value, name)); }, doc);
+                       [set, name, rgb](PyScene& s, py::handle value) { set(*s.scene, read_vec3(value, name, rgb)); },
+                       doc);
 }
 
 void bind_scene_camera(py::class_<PyScene>& scene) {
@@ -181,9 +184,9 @@ void bind_scene_camera(py::class_<PyScene>& scene) {
     vector_property(scene, "up", [](const Scene& s) { return s.camera.up; },
                     [](Scene& s, const glm::dvec3& v) { s.camera.up = v; }, "Up direction (not parallel to the view).");
     vector_property(scene, "background", [](const Scene& s) { return glm::dvec3(s.image.background); },
-                    [](Scene& s, const glm::dvec3& v) { s.image.background = glm::vec3(v); }, "Background RGB.");
+                    [](Scene& s, const glm::dvec3& v) { s.image.background = glm::vec3(v); }, "Background RGB.", true);
     vector_property(scene, "ambient", [](const Scene& s) { return glm::dvec3(s.ambient); },
-                    [](Scene& s, const glm::dvec3& v) { s.ambient = glm::vec3(v); }, "Ambient intensity Ia (RGB).");
+                    [](Scene& s, const glm::dvec3& v) { s.ambient = glm::vec3(v); }, "Ambient intensity Ia (RGB).", true);
     scene.def_property("focal", [](const PyScene& s) { return s.scene->camera.focal; },
                        [](PyScene& s, py::handle v) { s.scene->camera.focal = read_number(v, "focal"); },
                        "Distance from the eye to the image plane.");
