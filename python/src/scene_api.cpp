@@ -37,7 +37,7 @@ py::array view_of(Component* data, std::size_t count, const std::shared_ptr<Owne
     return view_rows_of_three(data, count, base, writable);
 }
 
-PyMesh mesh_from_arrays(py::handle vertices, py::handle faces, py::handle colors) {
+PyMesh mesh_from_arrays(const py::object& vertices, const py::object& faces, const py::object& colors) {
     auto mesh = std::make_shared<Mesh>();
     mesh->positions = read_points(vertices, "vertices", SquareLayout::rows_are_points);
     if (!colors.is_none()) {
@@ -48,7 +48,7 @@ PyMesh mesh_from_arrays(py::handle vertices, py::handle faces, py::handle colors
 }
 
 /// The scene file's mesh (or `mesh` when given) and its material, resolved as the command does.
-PyScene complete_scene(io::SceneFile file, py::handle mesh) {
+PyScene complete_scene(io::SceneFile file, const py::object& mesh) {
     PyScene result{std::make_shared<Scene>(std::move(file.scene)), std::move(file.warnings)};
     std::optional<PhongMaterial> from_mtl;
     if (!mesh.is_none()) {
@@ -172,7 +172,7 @@ template <typename Getter, typename Setter>
 void vector_property(py::class_<PyScene>& scene, const char* name, Getter get, Setter set, const char* doc,
                      bool rgb = false) {
     scene.def_property(name, [get](const PyScene& s) { return vec3_array(get(*s.scene)); },
-                       [set, name, rgb](PyScene& s, py::handle value) { set(*s.scene, read_vec3(value, name, rgb)); },
+                       [set, name, rgb](PyScene& s, const py::object& value) { set(*s.scene, read_vec3(value, name, rgb)); },
                        doc);
 }
 
@@ -188,7 +188,7 @@ void bind_scene_camera(py::class_<PyScene>& scene) {
     vector_property(scene, "ambient", [](const Scene& s) { return glm::dvec3(s.ambient); },
                     [](Scene& s, const glm::dvec3& v) { s.ambient = glm::vec3(v); }, "Ambient intensity Ia (RGB).", true);
     scene.def_property("focal", [](const PyScene& s) { return s.scene->camera.focal; },
-                       [](PyScene& s, py::handle v) { s.scene->camera.focal = read_number(v, "focal"); },
+                       [](PyScene& s, const py::object& v) { s.scene->camera.focal = read_number(v, "focal"); },
                        "Distance from the eye to the image plane.");
     scene.def_property("sensor", [](const PyScene& s) { return py::make_tuple(s.scene->camera.sensor_height, s.scene->camera.sensor_width); },
                        [](PyScene& s, std::pair<py::object, py::object> hw) {
@@ -204,16 +204,16 @@ void bind_scene_camera(py::class_<PyScene>& scene) {
 
 void bind_scene_look(py::class_<PyScene>& scene) {
     scene.def_property("shader", [](const PyScene& s) { return std::string(to_string(s.scene->shader)); },
-                       [](PyScene& s, py::handle v) { s.scene->shader = read_shader(v, "shader"); },
+                       [](PyScene& s, const py::object& v) { s.scene->shader = read_shader(v, "shader"); },
                        "\"flat\", \"gouraud\" or \"phong\".");
     scene.def_property("lighting", [](const PyScene& s) { return to_string(s.scene->lighting); },
-                       [](PyScene& s, py::handle v) { s.scene->lighting = read_lighting(v, "lighting"); },
+                       [](PyScene& s, const py::object& v) { s.scene->lighting = read_lighting(v, "lighting"); },
                        "\"ambient\", \"diffuse\", \"specular\", \"full\", or several joined with \"+\".");
     scene.def_property("material", [](const PyScene& s) { return material_dict(s.scene->material); },
-                       [](PyScene& s, py::handle v) { s.scene->material = read_material(v, "material"); },
+                       [](PyScene& s, const py::object& v) { s.scene->material = read_material(v, "material"); },
                        "dict ka, kd, ks, n (set it from a dict or any object with those attributes).");
     scene.def_property("lights", [](const PyScene& s) { return lights_list(s.scene->lights); },
-                       [](PyScene& s, py::handle v) { s.scene->lights = read_lights(v, "lights"); },
+                       [](PyScene& s, const py::object& v) { s.scene->lights = read_lights(v, "lights"); },
                        "List of dicts position, intensity (set from dicts or objects with pos/position, intensity).");
     scene.def_property("mesh", [](const PyScene& s) { return PyMesh{std::shared_ptr<Mesh>(s.scene, &s.scene->mesh)}; },
                        [](PyScene& s, const PyMesh& m) {
@@ -272,7 +272,7 @@ next frame reuses). One frame at a time: concurrent calls on one Renderer wait.
 
     module.def("read_image", [](const std::string& path) { return image_to_array(io::read_image(path)); },
                py::arg("path"), "Reads an image (PNG values become value / 255; EXR as stored) as M x N x 3 float32.");
-    module.def("write_image", [](py::handle image, const std::string& path) {
+    module.def("write_image", [](const py::object& image, const std::string& path) {
         io::write_image(array_to_image(image, "image"), path);
     }, py::arg("image"), py::arg("path"),
        "Writes an M x N x 3 image: .png (8 bits, clamped to [0, 1], no gamma) or .exr (32-bit float), "

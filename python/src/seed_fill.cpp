@@ -55,7 +55,7 @@ struct TriangleInputs {
     Lighting lighting;
 };
 
-std::array<FixedPoint, 3> read_projected(py::handle verts_p) {
+std::array<FixedPoint, 3> read_projected(const py::object& verts_p) {
     const py::array_t<double> array = py::module_::import("numpy").attr("asarray")(verts_p, "float64");
     const bool columns = array.ndim() == 2 && array.shape(0) == 2 && array.shape(1) == 3;
     const bool rows = array.ndim() == 2 && array.shape(0) == 3 && array.shape(1) == 2;
@@ -73,13 +73,13 @@ std::array<FixedPoint, 3> read_projected(py::handle verts_p) {
     return corners;
 }
 
-std::array<glm::dvec3, 3> three_vectors(py::handle value, const std::string& name) {
+std::array<glm::dvec3, 3> three_vectors(const py::object& value, const std::string& name) {
     const std::vector<glm::dvec3> points = read_points(value, name, SquareLayout::columns_are_points, 3);
     return {points[0], points[1], points[2]};
 }
 
 /// The canvas X as a writable M x N x 3 float32 or float64 array (written in place).
-py::array writable_canvas(py::handle X) {
+py::array writable_canvas(const py::object& X) {
     if (!py::isinstance<py::array>(X)) throw py::type_error("X: expected a numpy array of shape M x N x 3");
     py::array canvas = py::reinterpret_borrow<py::array>(X);
     if (canvas.ndim() != 3 || canvas.shape(2) != 3) throw py::value_error("X: expected shape M x N x 3");
@@ -135,9 +135,9 @@ void fill_triangle(py::array& canvas, std::array<FixedPoint, 3> v, const Shade& 
     }
 }
 
-TriangleInputs read_inputs(py::handle verts_p, py::handle verts_n, py::handle verts_c, py::handle bcoords,
-                           py::handle cam_pos, py::handle mat, py::handle lights, py::handle light_amb,
-                           py::handle lighting) {
+TriangleInputs read_inputs(const py::object& verts_p, const py::object& verts_n, const py::object& verts_c, const py::object& bcoords,
+                           const py::object& cam_pos, const py::object& mat, const py::object& lights, const py::object& light_amb,
+                           const py::object& lighting) {
     TriangleInputs in;
     in.corners = read_projected(verts_p);
     in.normals = three_vectors(verts_n, "verts_n");
@@ -155,9 +155,9 @@ glm::dvec3 light_with(const TriangleInputs& in, const glm::dvec3& normal, const 
     return phongrast::light<double>(in.centroid, normal, color, in.eye, in.material, in.lights, in.ambient, in.lighting);
 }
 
-py::object shade_gouraud(py::handle verts_p, py::handle verts_n, py::handle verts_c, py::handle bcoords,
-                         py::handle cam_pos, py::handle mat, py::handle lights, py::handle light_amb, py::handle X,
-                         py::handle lighting) {
+py::object shade_gouraud(const py::object& verts_p, const py::object& verts_n, const py::object& verts_c, const py::object& bcoords,
+                         const py::object& cam_pos, const py::object& mat, const py::object& lights, const py::object& light_amb, const py::object& X,
+                         const py::object& lighting) {
     py::array canvas = writable_canvas(X);
     const TriangleInputs in = read_inputs(verts_p, verts_n, verts_c, bcoords, cam_pos, mat, lights, light_amb, lighting);
     const std::array<glm::dvec3, 3> lit = {light_with(in, in.normals[0], in.colors[0]),
@@ -169,9 +169,9 @@ py::object shade_gouraud(py::handle verts_p, py::handle verts_n, py::handle vert
     return py::reinterpret_borrow<py::object>(X);
 }
 
-py::object shade_phong(py::handle verts_p, py::handle verts_n, py::handle verts_c, py::handle bcoords,
-                       py::handle cam_pos, py::handle mat, py::handle lights, py::handle light_amb, py::handle X,
-                       py::handle lighting) {
+py::object shade_phong(const py::object& verts_p, const py::object& verts_n, const py::object& verts_c, const py::object& bcoords,
+                       const py::object& cam_pos, const py::object& mat, const py::object& lights, const py::object& light_amb, const py::object& X,
+                       const py::object& lighting) {
     py::array canvas = writable_canvas(X);
     const TriangleInputs in = read_inputs(verts_p, verts_n, verts_c, bcoords, cam_pos, mat, lights, light_amb, lighting);
     fill_triangle(canvas, in.corners, [&in](double w0, double w1, double w2) {

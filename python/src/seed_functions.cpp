@@ -15,7 +15,7 @@ namespace phongrast::python {
 namespace {
 
 /// A number stays a float; anything else becomes a float64 array of 3.
-py::object coefficient(py::handle value, const std::string& name) {
+py::object coefficient(const py::object& value, const std::string& name) {
     const glm::dvec3 v = read_vec3(value, name, true);
     if (v.x == v.y && v.y == v.z && !py::isinstance<py::array>(value) && !py::isinstance<py::list>(value) &&
         !py::isinstance<py::tuple>(value)) {
@@ -42,8 +42,8 @@ std::string seed_names(std::string message) {
     return message;
 }
 
-Camera read_seed_camera(py::handle focal, py::handle eye, py::handle lookat, py::handle up, py::handle H,
-                        py::handle W) {
+Camera read_seed_camera(const py::object& focal, const py::object& eye, const py::object& lookat, const py::object& up, const py::object& H,
+                        const py::object& W) {
     Camera camera;
     camera.focal = read_number(focal, "focal");
     camera.eye = read_vec3(eye, "eye");
@@ -57,10 +57,10 @@ Camera read_seed_camera(py::handle focal, py::handle eye, py::handle lookat, py:
     return camera;
 }
 
-py::array render_object(py::handle shader, py::handle focal, py::handle eye, py::handle lookat, py::handle up,
-                        py::handle bg_color, py::handle M, py::handle N, py::handle H, py::handle W,
-                        py::handle verts, py::handle vert_colors, py::handle faces, py::handle mat,
-                        py::handle lights, py::handle light_amb, py::handle lighting, const py::kwargs& keywords) {
+py::array render_object(const py::object& shader, const py::object& focal, const py::object& eye, const py::object& lookat, const py::object& up,
+                        const py::object& bg_color, const py::object& M, const py::object& N, const py::object& H, const py::object& W,
+                        const py::object& verts, const py::object& vert_colors, const py::object& faces, const py::object& mat,
+                        const py::object& lights, const py::object& light_amb, const py::object& lighting, const py::kwargs& keywords) {
     const SquareLayout layout = SquareLayout::columns_are_points;
     Scene scene;
     scene.shader = read_shader(shader, "shader");
@@ -91,8 +91,8 @@ py::array render_object(py::handle shader, py::handle focal, py::handle eye, py:
     return image_to_array(std::move(result.image));
 }
 
-py::array light_at_point(py::handle point, py::handle normal, py::handle vcolor, py::handle cam_pos, py::handle mat,
-                         py::handle lights, py::handle lighting, py::handle light_amb) {
+py::array light_at_point(const py::object& point, const py::object& normal, const py::object& vcolor, const py::object& cam_pos, const py::object& mat,
+                         const py::object& lights, const py::object& lighting, const py::object& light_amb) {
     const glm::dvec3 lit = phongrast::light<double>(
         read_vec3(point, "point"), read_vec3(normal, "normal"), read_vec3(vcolor, "vcolor", true),
         read_vec3(cam_pos, "cam_pos"), read_material(mat, "mat"), read_lights(lights, "lights"),
@@ -100,7 +100,7 @@ py::array light_at_point(py::handle point, py::handle normal, py::handle vcolor,
     return py::array_t<double>(3, &lit.x);
 }
 
-py::array normals_of(py::handle verts, py::handle faces) {
+py::array normals_of(const py::object& verts, const py::object& faces) {
     const py::array shape_probe = py::module_::import("numpy").attr("asarray")(verts);
     const bool columns = shape_probe.ndim() == 2 && shape_probe.shape(0) == 3;
     const std::vector<glm::dvec3> positions = read_points(verts, "verts", SquareLayout::columns_are_points);
@@ -138,7 +138,7 @@ border dropped). mode="exact" renders the contract without them.
 void bind_seed_classes(py::module_& module) {
     py::class_<SeedMaterial>(module, "PhongMaterial",
                              "The seed's material: ka, kd, ks (numbers or RGB triples) and the Phong exponent n_phong.")
-        .def(py::init([](py::handle ka, py::handle kd, py::handle ks, py::handle n_phong) {
+        .def(py::init([](const py::object& ka, const py::object& kd, const py::object& ks, const py::object& n_phong) {
                  const double n = read_number(n_phong, "n_phong");
                  if (n < 0) throw py::value_error("n_phong: expected a non-negative Phong exponent");
                  return SeedMaterial{coefficient(ka, "ka"), coefficient(kd, "kd"), coefficient(ks, "ks"), py::float_(n)};
@@ -153,7 +153,7 @@ void bind_seed_classes(py::module_& module) {
                    ", ks=" + std::string(py::repr(m.ks)) + ", n_phong=" + std::string(py::repr(m.n_phong)) + ")";
         });
     py::class_<SeedLight>(module, "PointLight", "The seed's point light: world position pos and RGB intensity.")
-        .def(py::init([](py::handle pos, py::handle intensity) {
+        .def(py::init([](const py::object& pos, const py::object& intensity) {
                  const glm::dvec3 p = read_vec3(pos, "pos");
                  return SeedLight{py::array_t<double>(3, &p.x), coefficient(intensity, "intensity")};
              }),
