@@ -1,6 +1,7 @@
 #include "arrays.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 #include <initializer_list>
 #include <stdexcept>
@@ -81,23 +82,49 @@ PointAxes point_axes(const py::array& array, const std::string& name, SquareLayo
     return axes;
 }
 
+[[noreturn]] void throw_nonfinite(const std::string& name, std::size_t point, double value) {
+    throw py::value_error(name + ": point " + std::to_string(point) + " has a " + (std::isnan(value) ? "NaN" : "infinite") +
+                          " value; expected finite numbers");
+}
+
+/// Converts the components and notes, without a branch per value, whether all are finite
+/// (x - x is 0 for a finite x and NaN otherwise); the slow search for the culprit runs only on failure.
 template <typename Source, typename Point>
 void copy_points(const py::array& array, const PointAxes& axes, const std::string& name,
                  std::vector<Point>& out) {
     using Component = typename Point::value_type;
+    static_assert(sizeof(Point) == 3 * sizeof(Component), "points must be three packed components");
     const auto* base = static_cast<const char*>(array.data());
     out.resize(axes.count);
-    for (std::size_t i = 0; i < axes.count; ++i) {
-        const char* point = base + static_cast<py::ssize_t>(i) * axes.point_stride;
-        for (int c = 0; c < 3; ++c) {
-            Source value;
-            std::memcpy(&value, point + c * axes.component_stride, sizeof value);
-            if (!std::isfinite(value)) {
-                throw py::value_error(name + ": point " + std::to_string(i) + " has a " +
-                                      (std::isnan(value) ? "NaN" : "infinite") +
-                                      " value; expected finite numbers");
+    auto* target = reinterpret_cast<Component*>(out.data());
+    const auto read = [&](std::size_t i, int c) {
+        Source value;
+        std::memcpy(&value, base + static_cast<py::ssize_t>(i) * axes.point_stride + c * axes.component_stride,
+                    sizeof value);
+        return value;
+    };
+    bool finite = true;
+    if (axes.point_stride == 3 * static_cast<py::ssize_t>(sizeof(Source)) &&
+        axes.component_stride == static_cast<py::ssize_t>(sizeof(Source))) {
+        // Nv x 3 C-ordered, or 3 x Nv Fortran-ordered: the same packed memory.
+        const auto* source = reinterpret_cast<const Source*>(base);
+        for (std::size_t k = 0; k < 3 * axes.count; ++k) {
+            finite &= (source[k] - source[k] == Source(0));
+            target[k] = static_cast<Component>(source[k]);
+        }
+    } else {
+        for (std::size_t i = 0; i < axes.count; ++i) {
+            for (int c = 0; c < 3; ++c) {
+                const Source value = read(i, c);
+                finite &= (value - value == Source(0));
+                target[3 * i + static_cast<std::size_t>(c)] = static_cast<Component>(value);
             }
-            out[i][c] = static_cast<Component>(value);
+        }
+    }
+    if (finite) return;
+    for (std::size_t i = 0; i < axes.count; ++i) {
+        for (int c = 0; c < 3; ++c) {
+            if (!std::isfinite(read(i, c))) throw_nonfinite(name, i, static_cast<double>(read(i, c)));
         }
     }
 }
@@ -135,23 +162,48 @@ py::array as_index_array(py::handle value, const std::string& name) {
     return numpy().attr("asarray")(array, "int64");
 }
 
+/// Reads the indices (packed fast path as for points), then checks them all against
+/// the vertex count at once; the face and index are searched for only on failure.
 template <typename Index>
 std::vector<Triangle> copy_faces(const py::array& array, const PointAxes& axes, const std::string& name,
                                  std::size_t vertex_count) {
     const auto* base = static_cast<const char*>(array.data());
     std::vector<Triangle> faces(axes.count);
+    auto* target = reinterpret_cast<std::uint32_t*>(faces.data());
+    const auto read = [&](std::size_t i, int c) {
+        Index index;
+        std::memcpy(&index, base + static_cast<py::ssize_t>(i) * axes.point_stride + c * axes.component_stride,
+                    sizeof index);
+        return index;
+    };
+    // Negative indices become huge unsigned values, so one comparison catches both ends.
+    unsigned long long largest = 0;
+    if (axes.point_stride == 3 * static_cast<py::ssize_t>(sizeof(Index)) &&
+        axes.component_stride == static_cast<py::ssize_t>(sizeof(Index))) {
+        const auto* source = reinterpret_cast<const Index*>(base);
+        for (std::size_t k = 0; k < 3 * axes.count; ++k) {
+            largest = std::max(largest, static_cast<unsigned long long>(source[k]));
+            target[k] = static_cast<std::uint32_t>(source[k]);
+        }
+    } else {
+        for (std::size_t i = 0; i < axes.count; ++i) {
+            for (int c = 0; c < 3; ++c) {
+                const Index index = read(i, c);
+                largest = std::max(largest, static_cast<unsigned long long>(index));
+                target[3 * i + static_cast<std::size_t>(c)] = static_cast<std::uint32_t>(index);
+            }
+        }
+    }
+    if (axes.count == 0 || largest < vertex_count) return faces;
     for (std::size_t i = 0; i < axes.count; ++i) {
-        const char* face = base + static_cast<py::ssize_t>(i) * axes.point_stride;
         for (int c = 0; c < 3; ++c) {
-            Index index;
-            std::memcpy(&index, face + c * axes.component_stride, sizeof index);
+            const Index index = read(i, c);
             if (index < 0 || static_cast<unsigned long long>(index) >= vertex_count) {
                 throw py::value_error(name + ": face " + std::to_string(i) + " has vertex index " +
                                       std::to_string(index) + "; expected 0-based indices from 0 to " +
                                       std::to_string(static_cast<long long>(vertex_count) - 1) + " (" +
                                       std::to_string(vertex_count) + " vertices)");
             }
-            faces[i][static_cast<std::size_t>(c)] = static_cast<std::uint32_t>(index);
         }
     }
     return faces;

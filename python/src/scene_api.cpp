@@ -1,4 +1,5 @@
 // The Pythonic layer: Mesh, Scene, render, Renderer, read_image, write_image.
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -270,6 +271,20 @@ next frame reuses). One frame at a time: concurrent calls on one Renderer wait.
         }))
         .def("render", &PyRenderer::render_frame, py::arg("scene"), "Renders one frame: (image, stats).");
 
+    module.def("_cpp_render_seconds", [](const PyScene& s, int repeats, const py::kwargs& keywords) {
+        const RenderOptions options = options_from_keywords(keywords, "exact");
+        const std::shared_ptr<const Scene> keep = s.scene;
+        std::vector<double> seconds;
+        py::gil_scoped_release release;
+        for (int i = 0; i < repeats; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            const RenderResult result = render(*keep, options);
+            seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+        return seconds;
+    }, py::arg("scene"), py::arg("repeats"),
+       "For bench/python_overhead.py: wall times of `repeats` calls of the C++ render(scene, options), timed in "
+       "C++ (no Python in between), the baseline the Python calls are compared with.");
     module.def("read_image", [](const std::string& path) { return image_to_array(io::read_image(path)); },
                py::arg("path"), "Reads an image (PNG values become value / 255; EXR as stored) as M x N x 3 float32.");
     module.def("write_image", [](const py::object& image, const std::string& path) {

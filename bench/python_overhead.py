@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""What calling phongrast from Python adds to the C++ render (docs/python.md).
+
+For each scene, alternately: the Python call (render_object with the seed's
+arrays, or render(scene)), timed around the call in Python, and the C++
+render(scene) of the same scene timed inside C++ with no Python in between
+(phongrast._cpp_render_seconds), in the same process. Reports the medians, the
+overhead (difference of the medians) and the ratio, and checks the budget: the
+Python call adds at most 5% or 0.2 ms, whichever is larger.
+
+Scenes: the default scene (assets/default.json, 512x512, Phong) and a generated
+torus of 1,048,576 triangles at 512x512 (no shared asset needed).
+
+    PYTHONPATH=build/release/python /usr/bin/python3 bench/python_overhead.py [--repeats 15] [--threads 1]
+"""
+import argparse
+import pathlib
+import statistics
+import sys
+import time
+
+import numpy as np
+
+import phongrast
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def torus(rings=1024, sides=512, radius=1.0, tube=0.35):
+    """A closed torus grid: rings x sides vertices, 2 x rings x sides triangles, rainbow colours."""
+    u = np.linspace(0, 2 * np.pi, rings, endpoint=False)[:, None]
+    v = np.linspace(0, 2 * np.pi, sides, endpoint=False)[None, :]
+    verts = np.stack([(radius + tube * np.cos(v)) * np.cos(u), tube * np.sin(v) * np.ones_like(u),
+                      (radius + tube * np.cos(v)) * np.sin(u)], -1).reshape(-1, 3)
+    colors = np.stack([0.5 + 0.5 * np.cos(u + 0 * v), 0.5 + 0.5 * np.cos(u + 2.1 + 0 * v),
+                       0.5 + 0.5 * np.cos(u + 4.2 + 0 * v)], -1).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
+    a, b = i * sides + j, ((i + 1) % rings) * sides + j
+    c, d = ((i + 1) % rings) * sides + (j + 1) % sides, i * sides + (j + 1) % sides
+    faces = np.concatenate([np.stack([a, d, c], -1).reshape(-1, 3), np.stack([a, c, b], -1).reshape(-1, 3)])
+    return verts, colors, faces
+
+
+def seed_arguments(scene):
+    """render_object's arguments for `scene`: the exercise's 3 x Nv Fortran-ordered arrays."""
+    mesh = scene.mesh
+    colors = mesh.colors if mesh.colors is not None else np.ones_like(mesh.positions)
+    m = scene.material
+    material = phongrast.PhongMaterial(m["ka"], m["kd"], m["ks"], m["n"])
+    lights = [phongrast.PointLight(l["position"], l["intensity"]) for l in scene.lights]
+    (M, N), (H, W) = scene.size, scene.sensor
+    return (scene.shader, scene.focal, scene.eye, scene.lookat, scene.up, scene.background, M, N, H, W,
+            np.asfortranarray(mesh.positions.T), np.asfortranarray(colors.T), np.asfortranarray(mesh.faces.T),
+            material, lights, scene.ambient, scene.lighting)
+
+
+def measure(python_call, scene, repeats, options):
+    """Alternating Python-call and C++-render times (seconds) after one warm-up of each."""
+    python_call()
+    phongrast._cpp_render_seconds(scene, 1, **options)
+    python_times, cpp_times = [], []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        python_call()
+        python_times.append(time.perf_counter() - start)
+        cpp_times.extend(phongrast._cpp_render_seconds(scene, 1, **options))
+    return python_times, cpp_times
+
+
+def report(name, python_times, cpp_times):
+    py, cpp = statistics.median(python_times), statistics.median(cpp_times)
+    overhead = py - cpp
+    budget = max(0.05 * cpp, 0.2e-3)
+    verdict = "within" if overhead <= budget else "OVER"
+    print(f"| {name} | {cpp * 1e3:.2f} | {py * 1e3:.2f} | {overhead * 1e3:+.3f} | {py / cpp:.3f} | "
+          f"{budget * 1e3:.2f} ({verdict}) |", flush=True)
+    return overhead <= budget
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=15)
+    parser.add_argument("--threads", type=int, default=1, help="render threads (default 1: the steadiest timing)")
+    args = parser.parse_args()
+    options = {"threads": args.threads}
+
+    default = phongrast.Scene.load(str(ROOT / "assets" / "default.json"))
+    verts, colors, faces = torus()
+    big = phongrast.Scene.from_mesh(phongrast.Mesh(verts, faces, colors=colors), 512, 512)
+    print(f"phongrast {phongrast.__version__}, Python {sys.version.split()[0]}, numpy {np.__version__}, "
+          f"{args.repeats} repeats, threads={args.threads}; times in ms (medians)\n")
+    print("| call | C++ render | Python call | overhead | ratio | budget |")
+    print("|---|---:|---:|---:|---:|---:|")
+    ok = True
+    for label, scene in [(f"default scene 512x512, {default.mesh.triangle_count} triangles", default),
+                         (f"torus 512x512, {big.mesh.triangle_count} triangles", big)]:
+        arguments = seed_arguments(scene)
+        exact = phongrast.render_object(*arguments, mode="exact", **options)
+        assert np.array_equal(exact, phongrast.render(scene, **options)[0]), "render_object and render differ"
+        ok &= report(f"render(scene), {label}", *measure(lambda: phongrast.render(scene, **options), scene,
+                                                         args.repeats, options))
+        renderer = phongrast.Renderer(**options)
+        ok &= report(f"Renderer.render(scene), {label}",
+                     *measure(lambda: renderer.render(scene), scene, args.repeats, options))
+        ok &= report(f"render_object(3 x Nv arrays, mode=\"exact\"), {label}",
+                     *measure(lambda: phongrast.render_object(*arguments, mode="exact", **options), scene,
+                              args.repeats, options))
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
