@@ -94,6 +94,18 @@ py::tuple render_with_stats(const PyScene& scene, const RenderOptions& options) 
     return py::make_tuple(image_to_array(std::move(result.image)), stats);
 }
 
+/// Wall times of `repeats` calls of `call`, timed in C++ (for bench/python_overhead.py's baseline).
+template <typename Call>
+std::vector<double> time_calls(int repeats, const Call& call) {
+    std::vector<double> seconds;
+    for (int i = 0; i < repeats; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        call();
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    return seconds;
+}
+
 /// One Renderer, one frame at a time: the lock is taken with the GIL released.
 struct PyRenderer {
     Renderer renderer;
@@ -111,6 +123,13 @@ struct PyRenderer {
             stats = result.stats;
         }
         return py::make_tuple(image_to_array(std::move(image)), stats_to_dict(stats));
+    }
+
+    std::vector<double> time_frames(const PyScene& scene, int repeats) {
+        const std::shared_ptr<const Scene> keep = scene.scene;
+        py::gil_scoped_release release;
+        const std::lock_guard<std::mutex> lock(busy);
+        return time_calls(repeats, [&] { renderer.render(*keep); });
     }
 };
 
@@ -226,6 +245,41 @@ void bind_scene_look(py::class_<PyScene>& scene) {
     scene.def_readonly("warnings", &PyScene::warnings, "Unknown fields and defaults used, one line each.");
 }
 
+/// render, Renderer, and the C++ timings bench/python_overhead.py compares them with.
+void bind_rendering(py::module_& module) {
+    module.def("render", [](const PyScene& s, const py::kwargs& keywords) {
+        return render_with_stats(s, options_from_keywords(keywords, "exact"));
+    }, py::arg("scene"), (std::string("render(scene, **options) -> (image, stats)\n\n"
+        "Renders the scene: image is M x N x 3 float32, row 0 at the top, owning the C++ buffer (no copy); "
+        "stats is a dict (triangles drawn, dropped, clipped, samples, seconds, ...). mode=\"exact\" by default.\n\n") +
+        option_keywords_doc).c_str());
+
+    py::class_<PyRenderer>(module, "Renderer", (std::string(R"(Renders frame after frame, keeping its buffers and worker threads.
+
+Renderer(**options); renderer.render(scene) -> (image, stats), the same pictures
+as render(). Each returned image is a copy of the renderer's buffer (which the
+next frame reuses). One frame at a time: concurrent calls on one Renderer wait.
+
+)") + option_keywords_doc).c_str())
+        .def(py::init([](const py::kwargs& keywords) {
+            auto renderer = std::make_unique<PyRenderer>();
+            renderer->renderer.set_options(options_from_keywords(keywords, "exact"));
+            return renderer;
+        }))
+        .def("render", &PyRenderer::render_frame, py::arg("scene"), "Renders one frame: (image, stats).")
+        .def("_cpp_render_seconds", &PyRenderer::time_frames, py::arg("scene"), py::arg("repeats"),
+             "For bench/python_overhead.py: wall times of `repeats` frames of this Renderer, timed in C++.");
+
+    module.def("_cpp_render_seconds", [](const PyScene& s, int repeats, const py::kwargs& keywords) {
+        const RenderOptions options = options_from_keywords(keywords, "exact");
+        const std::shared_ptr<const Scene> keep = s.scene;
+        py::gil_scoped_release release;
+        return time_calls(repeats, [&] { render(*keep, options); });
+    }, py::arg("scene"), py::arg("repeats"),
+       "For bench/python_overhead.py: wall times of `repeats` calls of the C++ render(scene, options), timed in "
+       "C++ (no Python in between), the baseline the Python calls are compared with.");
+}
+
 }  // namespace
 
 void bind_scene_api(py::module_& module) {
@@ -250,41 +304,7 @@ columns) frames a mesh automatically. Every field is a property.)");
     bind_scene_camera(scene);
     bind_scene_look(scene);
 
-    module.def("render", [](const PyScene& s, const py::kwargs& keywords) {
-        return render_with_stats(s, options_from_keywords(keywords, "exact"));
-    }, py::arg("scene"), (std::string("render(scene, **options) -> (image, stats)\n\n"
-        "Renders the scene: image is M x N x 3 float32, row 0 at the top, owning the C++ buffer (no copy); "
-        "stats is a dict (triangles drawn, dropped, clipped, samples, seconds, ...). mode=\"exact\" by default.\n\n") +
-        option_keywords_doc).c_str());
-
-    py::class_<PyRenderer>(module, "Renderer", (std::string(R"(Renders frame after frame, keeping its buffers and worker threads.
-
-Renderer(**options); renderer.render(scene) -> (image, stats), the same pictures
-as render(). Each returned image is a copy of the renderer's buffer (which the
-next frame reuses). One frame at a time: concurrent calls on one Renderer wait.
-
-)") + option_keywords_doc).c_str())
-        .def(py::init([](const py::kwargs& keywords) {
-            auto renderer = std::make_unique<PyRenderer>();
-            renderer->renderer.set_options(options_from_keywords(keywords, "exact"));
-            return renderer;
-        }))
-        .def("render", &PyRenderer::render_frame, py::arg("scene"), "Renders one frame: (image, stats).");
-
-    module.def("_cpp_render_seconds", [](const PyScene& s, int repeats, const py::kwargs& keywords) {
-        const RenderOptions options = options_from_keywords(keywords, "exact");
-        const std::shared_ptr<const Scene> keep = s.scene;
-        std::vector<double> seconds;
-        py::gil_scoped_release release;
-        for (int i = 0; i < repeats; ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            const RenderResult result = render(*keep, options);
-            seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        }
-        return seconds;
-    }, py::arg("scene"), py::arg("repeats"),
-       "For bench/python_overhead.py: wall times of `repeats` calls of the C++ render(scene, options), timed in "
-       "C++ (no Python in between), the baseline the Python calls are compared with.");
+    bind_rendering(module);
     module.def("read_image", [](const std::string& path) { return image_to_array(io::read_image(path)); },
                py::arg("path"), "Reads an image (PNG values become value / 255; EXR as stored) as M x N x 3 float32.");
     module.def("write_image", [](const py::object& image, const std::string& path) {
