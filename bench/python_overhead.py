@@ -9,8 +9,9 @@ the same process. Reports the medians, the
 overhead (difference of the medians) and the ratio, and checks the budget: the
 Python call adds at most 5% or 0.2 ms, whichever is larger.
 
-Scenes: the default scene (assets/default.json, 512x512, Phong) and a generated
-torus of 1,048,576 triangles at 512x512 (no shared asset needed).
+Scenes: the default scene (assets/default.json, 512x512, Phong), the same on
+a 1x1 image (the per-call cost with almost no fill), and a generated torus of
+1,048,576 triangles at 512x512 (no shared asset needed).
 
     PYTHONPATH=build/release/python /usr/bin/python3 bench/python_overhead.py [--repeats 201] [--big-repeats 15] [--threads 1]
 """
@@ -101,6 +102,9 @@ def main():
     options = {"threads": args.threads}
 
     default = phongrast.Scene.load(str(ROOT / "assets" / "default.json"))
+    # The same scene on one pixel: almost no fill, so what remains is the per-call cost.
+    one_pixel = default.copy()
+    one_pixel.size = (1, 1)
     verts, colors, faces = torus()
     big = phongrast.Scene.from_mesh(phongrast.Mesh(verts, faces, colors=colors), 512, 512)
     print(f"phongrast {phongrast.__version__}, Python {sys.version.split()[0]}, numpy {np.__version__}, "
@@ -111,6 +115,7 @@ def main():
     ok = True
     for label, scene, repeats in [
             (f"default scene 512x512, {default.mesh.triangle_count} triangles", default, args.repeats),
+            (f"default scene 1x1, {default.mesh.triangle_count} triangles", one_pixel, args.repeats),
             (f"torus 512x512, {big.mesh.triangle_count} triangles", big, args.big_repeats)]:
         arguments = seed_arguments(scene)
         exact = phongrast.render_object(*arguments, mode="exact", **options)

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <pybind11/eval.h>
 #include <pybind11/numpy.h>
 
 #include "arrays.hpp"
@@ -23,16 +24,6 @@ py::object coefficient(const py::object& value, const std::string& name) {
     }
     return py::array_t<double>(3, &v.x);
 }
-
-/// The seed's material class: four attributes, checked when it is made.
-struct SeedMaterial {
-    py::object ka, kd, ks, n_phong;
-};
-
-/// The seed's light class: a position and an RGB intensity.
-struct SeedLight {
-    py::object pos, intensity;
-};
 
 /// Camera errors of the library ("camera.lookat: must differ from camera.eye") with the seed's argument names.
 std::string seed_names(std::string message) {
@@ -135,36 +126,52 @@ each triangle's centroid, screen-space interpolation, triangles touching the
 border dropped). mode="exact" renders the contract without them.
 )";
 
+/// The seed's two data classes, in Python so that they copy, pickle and compare
+/// like the exercise's own; their constructors check the values in C++.
+const char* const seed_classes_source = R"python(
+class PhongMaterial:
+    """The seed's material: ka, kd, ks (numbers or RGB triples) and the Phong exponent n_phong.
+
+    Any object with these attributes (or k_a, k_d, k_s, nphong, n) works where a
+    material is expected; this class only checks the values when it is made."""
+
+    def __init__(self, ka, kd, ks, n_phong):
+        self.ka, self.kd, self.ks = _coefficient(ka, "ka"), _coefficient(kd, "kd"), _coefficient(ks, "ks")
+        self.n_phong = _exponent(n_phong)
+
+    def __repr__(self):
+        return f"PhongMaterial(ka={self.ka!r}, kd={self.kd!r}, ks={self.ks!r}, n_phong={self.n_phong!r})"
+
+
+class PointLight:
+    """The seed's point light: world position pos (also readable as position) and RGB intensity (or one number)."""
+
+    def __init__(self, pos, intensity):
+        self.pos, self.intensity = _position(pos), _coefficient(intensity, "intensity")
+
+    @property
+    def position(self):
+        """Alias of pos."""
+        return self.pos
+
+    def __repr__(self):
+        return f"PointLight(pos={self.pos!r}, intensity={self.intensity!r})"
+)python";
+
 void bind_seed_classes(py::module_& module) {
-    py::class_<SeedMaterial>(module, "PhongMaterial",
-                             "The seed's material: ka, kd, ks (numbers or RGB triples) and the Phong exponent n_phong.")
-        .def(py::init([](const py::object& ka, const py::object& kd, const py::object& ks, const py::object& n_phong) {
-                 const double n = read_number(n_phong, "n_phong");
-                 if (n < 0) throw py::value_error("n_phong: expected a non-negative Phong exponent");
-                 return SeedMaterial{coefficient(ka, "ka"), coefficient(kd, "kd"), coefficient(ks, "ks"), py::float_(n)};
-             }),
-             py::arg("ka"), py::arg("kd"), py::arg("ks"), py::arg("n_phong"))
-        .def_readwrite("ka", &SeedMaterial::ka, "Ambient coefficient (number or RGB).")
-        .def_readwrite("kd", &SeedMaterial::kd, "Diffuse coefficient (number or RGB).")
-        .def_readwrite("ks", &SeedMaterial::ks, "Specular coefficient (number or RGB).")
-        .def_readwrite("n_phong", &SeedMaterial::n_phong, "Phong exponent n.")
-        .def("__repr__", [](const SeedMaterial& m) {
-            return "PhongMaterial(ka=" + std::string(py::repr(m.ka)) + ", kd=" + std::string(py::repr(m.kd)) +
-                   ", ks=" + std::string(py::repr(m.ks)) + ", n_phong=" + std::string(py::repr(m.n_phong)) + ")";
-        });
-    py::class_<SeedLight>(module, "PointLight", "The seed's point light: world position pos and RGB intensity.")
-        .def(py::init([](const py::object& pos, const py::object& intensity) {
-                 const glm::dvec3 p = read_vec3(pos, "pos");
-                 return SeedLight{py::array_t<double>(3, &p.x), coefficient(intensity, "intensity")};
-             }),
-             py::arg("pos"), py::arg("intensity"))
-        .def_readwrite("pos", &SeedLight::pos, "World position (3 numbers).")
-        .def_property("position", [](const SeedLight& l) { return l.pos; },
-                      [](SeedLight& l, py::object p) { l.pos = std::move(p); }, "Alias of pos.")
-        .def_readwrite("intensity", &SeedLight::intensity, "RGB intensity Ip (or one number).")
-        .def("__repr__", [](const SeedLight& l) {
-            return "PointLight(pos=" + std::string(py::repr(l.pos)) + ", intensity=" + std::string(py::repr(l.intensity)) + ")";
-        });
+    module.def("_coefficient", &coefficient, "A checked number or RGB triple (for PhongMaterial and PointLight).");
+    module.def("_exponent", [](const py::object& n_phong) {
+        const double n = read_number(n_phong, "n_phong");
+        if (n < 0) throw py::value_error("n_phong: expected a non-negative Phong exponent, got " + std::to_string(n));
+        return n;
+    }, "A checked Phong exponent (for PhongMaterial).");
+    module.def("_position", [](const py::object& pos) {
+        const glm::dvec3 p = read_vec3(pos, "pos");
+        return py::array_t<double>(3, &p.x);
+    }, "A checked position (for PointLight).");
+    py::exec(seed_classes_source, module.attr("__dict__"));
+    module.attr("PhongMaterial").attr("__module__") = "phongrast";
+    module.attr("PointLight").attr("__module__") = "phongrast";
 }
 
 }  // namespace

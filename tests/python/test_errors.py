@@ -61,6 +61,7 @@ BAD_RENDER_OBJECT_INPUTS = [
     (dict(lighting="sparkle"), ValueError, ["lighting", "sparkle", "diffusion"]),
     (dict(lighting="ambient+"), ValueError, ["lighting"]),
     (dict(mat=object()), TypeError, ["mat", "ka", "missing"]),
+    (dict(mat=phongrast.PhongMaterial.__new__(phongrast.PhongMaterial)), TypeError, ["mat", "missing"]),
     (dict(lights=[{"pos": [0, 0, 1]}]), TypeError, ["lights[0]", "intensity"]),
     (dict(lights=5), TypeError, ["lights"]),
     (dict(light_amb=[1, 2]), ValueError, ["light_amb"]),

@@ -122,3 +122,13 @@ def test_row_zero_is_the_top_of_the_picture():
                                     [[0], [1], [2]], phongrast.PhongMaterial(1, 0, 0, 1), [], 1, "ambient")
     rows = np.nonzero(image.any(axis=(1, 2)))[0]
     assert len(rows) > 0 and rows.max() < 10
+
+
+def test_seed_classes_copy_and_pickle_like_plain_python_objects(reference):
+    import copy
+    import pickle
+    scene, expected = reference
+    mat = pickle.loads(pickle.dumps(copy.deepcopy(scene.mat)))
+    lights = [pickle.loads(pickle.dumps(copy.copy(light))) for light in scene.lights]
+    assert np.array_equal(scene.render("phong", mat=mat, lights=lights), expected)
+    assert repr(mat).startswith("PhongMaterial(ka=") and lights[0].position is lights[0].pos
