@@ -135,3 +135,20 @@ def test_shade_gouraud_interpolates_the_lit_vertices():
     assert np.allclose(X[0, 0], [1 - 0.5 / 6 - 0.5 / 4, 0.5 / 6, 0.5 / 4])
     assert np.all(X[3, 5] == 0)  # outside the triangle
     assert np.count_nonzero(X.any(axis=2)) == 12  # the pixel centres below the diagonal
+
+
+def test_shade_functions_handle_degenerate_input_on_purpose():
+    mat = phongrast.PhongMaterial(0.2, 0.7, 0.5, 0)
+    lights = [phongrast.PointLight([0, 0, 0], 1.0), phongrast.PointLight([3, 3, 3], 1.0)]  # one at bcoords
+    X = np.full((6, 6, 3), -1.0)
+    # Zero area (three collinear corners): nothing painted.
+    phongrast.shade_phong([[0, 3, 6], [0, 3, 6]], np.eye(3), np.ones((3, 3)), [0, 0, 0], [0, 0, 5], mat, lights,
+                          0.5, X, "full")
+    assert np.all(X == -1.0)
+    # Normals that cancel at some pixels, the eye at bcoords, a light at bcoords: finite everywhere.
+    normals = np.array([[0, 0, 1.0], [0, 0, -1.0], [0, 1.0, 0]]).T
+    for shade in (phongrast.shade_phong, phongrast.shade_gouraud):
+        X[:] = -1.0
+        shade([[0, 6, 0], [0, 0, 6]], normals, np.ones((3, 3)), [0, 0, 0], [0, 0, 0], mat, lights, 0.5, X, "full")
+        painted = X[..., 0] != -1.0
+        assert painted.sum() == 15 and np.all(np.isfinite(X))  # centres on the hypotenuse (a right edge) excluded
