@@ -4,9 +4,12 @@
 #ifndef PHONGRAST_APPS_BATCH_VIEWS_HPP
 #define PHONGRAST_APPS_BATCH_VIEWS_HPP
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "batch_manifest.hpp"
+#include "phongrast/io/obj_file.hpp"
 #include "scene_setup.hpp"
 
 namespace phongrast::cli {
@@ -19,9 +22,21 @@ struct JobScenes {
     std::vector<std::vector<PointLight>> lights;    ///< one set per view
 };
 
-/// Loads a job's files. Throws io::FileError or std::invalid_argument for a
-/// bad scene or mesh (the job fails, the batch goes on).
-JobScenes load_job(const BatchJob& job, int threads);
+/// Keeps the last OBJ file read (known by its path, size and modification
+/// time), so that consecutive jobs of a shard sharing a mesh parse it once.
+class LastMesh {
+public:
+    io::ObjFile read(const std::string& path);
+
+private:
+    std::string key_;
+    std::optional<io::ObjFile> obj_;
+};
+
+/// Loads a job's files, meshes through `meshes` when given. Throws
+/// io::FileError or std::invalid_argument for a bad scene or mesh (the job
+/// fails, the batch goes on).
+JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes = nullptr);
 
 /// Turntable views of an automatically framed scene: view v looks from
 /// 360 v / views degrees around the vertical (+y) axis through the look-at

@@ -57,10 +57,11 @@ struct WriteItem {
 
 void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, int threads,
                 BoundedQueue<LoadedJob>& loaded) {
+    LastMesh meshes;
     for (std::size_t position = first; position < jobs.size(); ++position) {
         LoadedJob job;
         try {
-            job.scenes = std::make_unique<JobScenes>(load_job(*jobs[position], threads));
+            job.scenes = std::make_unique<JobScenes>(load_job(*jobs[position], threads, &meshes));
         } catch (const std::exception& error) {
             job.error = error.what();
         }

@@ -21,8 +21,8 @@ bool is_obj(const std::string& path) {
     return extension == ".obj";
 }
 
-io::ObjFile load_mesh(const std::string& path, const Messages& messages) {
-    io::ObjFile obj = io::read_obj(path);
+io::ObjFile load_mesh(const std::string& path, const SceneFlags& flags, const Messages& messages) {
+    io::ObjFile obj = flags.read_obj ? flags.read_obj(path) : io::read_obj(path);
     for (const std::string& warning : obj.warnings) messages.warning(warning);
     return obj;
 }
@@ -86,7 +86,7 @@ Scene scene_from_file(io::SceneFile file, const std::string& input, const std::s
         throw io::FileError(input + ": /mesh: " + file.mesh_path +
                             ": mesh not found (no such file; a relative \"mesh\" is relative to the scene file)");
     }
-    io::ObjFile obj = load_mesh(file.mesh_path, messages);
+    io::ObjFile obj = load_mesh(file.mesh_path, flags, messages);
     Scene scene = std::move(file.scene);
     scene.mesh = std::move(obj.mesh);
     std::vector<std::string> defaults_used;
@@ -161,7 +161,7 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         int rows = 512;
         int columns = 512;
         if (!flags.size.empty()) std::tie(columns, rows) = parse_size(flags.size);
-        io::ObjFile obj = load_mesh(mesh_path, messages);
+        io::ObjFile obj = load_mesh(mesh_path, flags, messages);
         const std::optional<PhongMaterial> mtl = obj.material;
         prepared.scene = io::frame_mesh(std::move(obj.mesh), rows, columns);
         if (mtl) prepared.scene.material = *mtl;

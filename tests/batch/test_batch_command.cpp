@@ -176,7 +176,7 @@ TEST_CASE("a shard killed with SIGKILL mid-run and run again completes, without 
     CHECK(run_phongrast(folder, "batch --status jobs.jsonl -o out").status == 0);
 }
 
-TEST_CASE("--job-timeout stops a runaway job, records it and goes on with the next") {
+TEST_CASE("the job timeout (--job-timeout) stops a runaway job, records it and goes on with the next") {
     TemporaryFolder folder;
     generate_mesh(folder, "knot.obj", 40, 6);
     // 100,000 copies of a triangle covering a 2048x2048 image: about 4e11 samples
@@ -241,7 +241,7 @@ TEST_CASE("the shard comes from Slurm's or Kubernetes' variables") {
     CHECK_THAT(no_count.err, Catch::Contains("give --shards N"));
 }
 
-TEST_CASE("--status counts done, failed and missing jobs without rendering") {
+TEST_CASE("the status summary (--status) counts done, failed and missing jobs without rendering") {
     TemporaryFolder folder;
     small_manifest(folder, 5);
     const Run before = run_phongrast(folder, "batch --status jobs.jsonl -o out");

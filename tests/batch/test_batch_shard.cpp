@@ -26,7 +26,7 @@ bool same(const Shard& a, const Shard& b) { return a.index == b.index && a.count
 
 }  // namespace
 
-TEST_CASE("--shard I/N is checked") {
+TEST_CASE("the --shard flag I/N is checked") {
     CHECK(same(parse_shard("0/1"), {0, 1}));
     CHECK(same(parse_shard("3/4"), {3, 4}));
     for (const char* bad : {"4/4", "-1/4", "1/0", "1", "1/4x", "a/b", ""}) {

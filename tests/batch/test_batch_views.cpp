@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 
 #include "batch_views.hpp"
+#include "io_test_files.hpp"
+#include "phongrast/io/error.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/io/auto_scene.hpp"
 
@@ -69,4 +71,17 @@ TEST_CASE("turntable views circle the look-at point with the lights, every verte
     // A quarter turn looks at the box's end: the eye moved from +z to +x.
     CHECK(scenes.cameras[1].eye.x - centre.x == Approx(distance * std::cos(std::acos(-1.0) / 6.0)));
     CHECK(scenes.cameras[1].eye.z - centre.z == Approx(0.0).margin(1e-9));
+}
+
+TEST_CASE("the last mesh is kept for the next job, and read again when the file changes") {
+    TemporaryFolder folder;
+    const std::string path = folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    LastMesh meshes;
+    CHECK(meshes.read(path).mesh.positions.size() == 3);
+    CHECK(meshes.read(path).mesh.positions.size() == 3);
+    folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+    CHECK(meshes.read(path).mesh.positions.size() == 4);
+    folder.write("m.obj", "v 0 0 0\nf 1 2 3\n");
+    CHECK_THROWS_AS(meshes.read(path), phongrast::io::FileError);
+    CHECK_THROWS_AS(meshes.read(folder.file("missing.obj")), phongrast::io::FileError);
 }
