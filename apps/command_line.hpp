@@ -2,11 +2,14 @@
 #ifndef PHONGRAST_APPS_COMMAND_LINE_HPP
 #define PHONGRAST_APPS_COMMAND_LINE_HPP
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "phongrast/io/obj_file.hpp"
 
 namespace phongrast::cli {
 
@@ -25,6 +28,9 @@ struct SceneFlags {
     int threads = 0;
     int samples = 1;
     bool quiet = false;
+    /// Reads an OBJ file; empty: io::read_obj. The batch command passes a
+    /// reader that keeps the last mesh, for jobs that share it.
+    std::function<io::ObjFile(const std::string& path)> read_obj;
 };
 
 /// Adds the positional input, -o and every scene/override flag to `command`.

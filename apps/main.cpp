@@ -22,9 +22,11 @@ int main(int argc, char** argv) {
     RenderCommand render;
     SheetCommand sheet;
     GenerateCommand generate;
+    BatchCommand batch;
     add_render_command(app, render);
     add_sheet_command(app, sheet);
     add_generate_command(app, generate);
+    add_batch_command(app, batch);
 
     try {
         app.parse(argc, argv);
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) return run_render(render);
         if (app.got_subcommand("sheet")) return run_sheet(sheet);
         if (app.got_subcommand("generate")) return run_generate(generate);
+        if (app.got_subcommand("batch")) return run_batch(batch);
     } catch (const phongrast::io::FileError& error) {
         std::cerr << "phongrast: error: " << error.what() << '\n';
         return 2;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "command_line.hpp"
+#include "phongrast/io/scene_file.hpp"
 #include "phongrast/render.hpp"
 #include "report.hpp"
 
@@ -26,6 +27,12 @@ std::string find_default_scene();
 /// automatically framed mesh) go through `messages`. Throws io::FileError or
 /// std::invalid_argument for bad input.
 PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages);
+
+/// prepare_scene for a scene already parsed (a batch manifest's inline scene):
+/// loads its mesh and applies `flags` (its input and mesh are not used).
+/// `name` stands for the file in messages and is the PreparedScene's name.
+PreparedScene prepare_parsed_scene(io::SceneFile file, const std::string& name, const SceneFlags& flags,
+                                   const Messages& messages);
 
 /// `output` if given, else NAME + suffix in the current folder. Checks the
 /// extension and that the folder exists, before anything is rendered.
