@@ -17,6 +17,7 @@
 #include "bench_meshes.hpp"
 #include "bench_scenes.hpp"
 #include "phongrast/render.hpp"
+#include "support/scenes.hpp"
 
 namespace {
 
@@ -51,8 +52,8 @@ std::set<std::string> g_registered;
 phongrast::Scene make_scene(const Case& c) {
     phongrast::Scene scene = with_effect(c.mesh->scene, c.effect);
     scene.shader = c.shader;
-    if (c.lights != kSceneLights) scene.lights = lights_around(scene, c.lights);
-    const std::vector<phongrast::PointLight> extra = lights_around(scene, c.dark_lights);
+    if (c.lights != kSceneLights) scene.lights = phongrast::support::lights_around(scene, c.lights);
+    const std::vector<phongrast::PointLight> extra = phongrast::support::lights_around(scene, c.dark_lights);
     for (phongrast::PointLight dark : extra) {
         dark.intensity = glm::vec3(0.0f);
         scene.lights.push_back(dark);

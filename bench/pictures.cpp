@@ -1,4 +1,4 @@
-#include "report_images.hpp"
+#include "pictures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,9 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
-namespace phongrast::accuracy {
+#include "support/image_compare.hpp"
+
+namespace phongrast_bench {
 namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
@@ -52,6 +54,16 @@ void save(ImageBuf& buf, const std::string& path) {
         throw std::runtime_error(path + ": could not rename the written file into place");
     }
 }
+
+/// An RGB float buffer of rows x columns pixels, row-major.
+void save_rgb(const std::string& path, int rows, int columns, const std::vector<float>& rgb) {
+    ImageBuf buf(OIIO::ImageSpec(columns, rows, 3, OIIO::TypeDesc::FLOAT), const_cast<float*>(rgb.data()));
+    ImageBuf copy;
+    copy.copy(buf, OIIO::TypeDesc::UINT8);
+    save(copy, path);
+}
+
+float clamp01(float value) { return std::clamp(value, 0.0f, 1.0f); }
 
 std::string decade_label(int exponent, const char* unit) {
     char buffer[32];
@@ -187,4 +199,36 @@ void write_panels(const std::string& path, const std::vector<Panel>& panels) {
     save(buf, path);
 }
 
-}  // namespace phongrast::accuracy
+void write_png(const std::string& path, const phongrast::Image& image) {
+    std::vector<float> rgb;
+    rgb.reserve(image.pixels.size() * 3);
+    for (const glm::vec3& p : image.pixels) rgb.insert(rgb.end(), {clamp01(p.x), clamp01(p.y), clamp01(p.z)});
+    save_rgb(path, image.rows, image.columns, rgb);
+}
+
+void write_difference_map(const std::string& path, const phongrast::Image& first, const phongrast::Image& second,
+                          const glm::vec3& background) {
+    const std::vector<double> map = phongrast::support::error_map(first, second);
+    std::vector<float> rgb;
+    rgb.reserve(map.size() * 3);
+    for (std::size_t i = 0; i < map.size(); ++i) {
+        const bool in_first = first.pixels[i] != background;
+        const bool in_second = second.pixels[i] != background;
+        glm::vec3 colour(0.0f);
+        if (in_first && !in_second) {
+            colour = {1.0f, 0.0f, 1.0f};
+        } else if (!in_first && in_second) {
+            colour = {0.0f, 1.0f, 1.0f};
+        } else if (map[i] > phongrast::support::kOneLevel) {
+            const float t = std::min(1.0f, float(map[i] / (16.0 * phongrast::support::kOneLevel)));
+            colour = {clamp01(3.0f * t), clamp01(3.0f * t - 1.0f), clamp01(3.0f * t - 2.0f)};
+            colour.x = std::max(colour.x, 0.35f);  // even 2/255 stays visible
+        } else if (in_first) {
+            colour = glm::vec3(0.15f);
+        }
+        rgb.insert(rgb.end(), {colour.x, colour.y, colour.z});
+    }
+    save_rgb(path, first.rows, first.columns, rgb);
+}
+
+}  // namespace phongrast_bench
