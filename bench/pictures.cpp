@@ -89,7 +89,7 @@ Color heat(double error) {
 
 void write_error_time_plot(const std::string& path, const std::string& title,
                            const std::vector<PlotPoint>& points, const std::vector<std::size_t>& front) {
-    const int width = 900, height = 600, left = 90, right = 30, top = 60, bottom = 70;
+    const int width = 1250, height = 600, left = 90, right = 350, top = 60, bottom = 70;
     ImageBuf buf(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
     const float white[3] = {1, 1, 1};
     OIIO::ImageBufAlgo::fill(buf, white);
@@ -142,7 +142,27 @@ void write_error_time_plot(const std::string& path, const std::string& title,
         if (p.kind == PointKind::screened) continue;
         const Color c = p.kind == PointKind::from_seed ? kSeed : p.kind == PointKind::from_exact ? kExact : kFront;
         box(buf, px(p.milliseconds), py(p.rmse), 3, c);
-        if (!p.label.empty()) text(buf, px(p.milliseconds) + 6, py(p.rmse) - 4, p.label, 12, c);
+    }
+    // The front's points are numbered (alternately above and below the line, so
+    // neighbours do not overlap) and listed with their configurations on the right.
+    std::vector<bool> on_front(points.size(), false);
+    for (std::size_t k = 0; k < front.size(); ++k) {
+        const PlotPoint& p = points[front[k]];
+        on_front[front[k]] = true;
+        text(buf, px(p.milliseconds) + 6, py(p.rmse) + (k % 2 ? 17 : -7), std::to_string(k + 1), 12, kFront);
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const PlotPoint& p = points[i];
+        if (p.kind == PointKind::screened || p.label.empty() || on_front[i]) continue;
+        const Color c = p.kind == PointKind::from_seed ? kSeed : kExact;
+        text(buf, px(p.milliseconds) + 7, py(p.rmse) - 6, p.label, 12, c);
+    }
+    int list_y = top + 14;
+    text(buf, width - right + 14, list_y, "Pareto front, fastest first:", 13, kBlack);
+    for (std::size_t k = 0; k < front.size(); ++k) {
+        list_y += 17;
+        const std::string& label = points[front[k]].label;
+        text(buf, width - right + 14, list_y, std::to_string(k + 1) + "  " + (label.empty() ? "?" : label), 11, kFront);
     }
     for (std::size_t index : front) box(buf, px(points[index].milliseconds), py(points[index].rmse), 5, kFront, false);
 
@@ -156,7 +176,7 @@ void write_error_time_plot(const std::string& path, const std::string& title,
     legend(kSeed, "seed, and one option switched from it", 3);
     legend(kExact, "exact, and one option switched from it", 3);
     legend(kScreened, "every combination (one unwarmed run each)", 1);
-    legend(kFront, "Pareto front (line; re-timed as the others)", 3);
+    legend(kFront, "Pareto front (line; numbered, named on the right)", 3);
     save(buf, path);
 }
 

@@ -244,10 +244,10 @@ std::string run_scene(const NamedScene& named, const Settings& s) {
     }
     for (std::size_t index : measured) {
         const Row& r = rows[index];
-        // Only the presets are named on the plot; the table marks the front.
-        const bool labelled = r.name == "seed" || r.name == "exact";
-        if (std::find(front.begin(), front.end(), index) != front.end()) front_points.push_back(points.size());
-        points.push_back({r.ms_one, r.error.rmse, r.kind, labelled ? r.name : ""});
+        // Every point of the front is named by its configuration, and so are the two presets.
+        const bool on_front = std::find(front.begin(), front.end(), index) != front.end();
+        if (on_front) front_points.push_back(points.size());
+        points.push_back({r.ms_one, r.error.rmse, r.kind, on_front || r.name == "seed" || r.name == "exact" ? r.name : ""});
     }
     std::sort(front_points.begin(), front_points.end(),
               [&](std::size_t a, std::size_t b) { return points[a].milliseconds < points[b].milliseconds; });
