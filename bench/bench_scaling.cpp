@@ -1,4 +1,4 @@
-// Issue 8: how phongrast's render time grows with the triangle count and with
+// bench_scaling: how phongrast's render time grows with the triangle count and with
 // the image size, Gouraud and Phong, 1 and 2 threads (RenderOptions::exact()).
 //
 // Two sweeps over the llvmpipe comparison's dented, coloured icosphere
@@ -12,7 +12,7 @@
 //                its README, framed by io::frame_mesh), Gouraud and Phong; skipped, saying so, when the
 //                folder is absent.
 // Each benchmark reports the counters `triangles` and `samples` (samples shaded)
-// so bench/scaling_slopes.py can fit time against both on log-log axes.
+// so bench/report.py scaling can fit time against both on log-log axes.
 //
 // Usage: bench_scaling [--quick] [Google Benchmark flags]
 //   --quick: the triangle and pixel sweeps up to 256k triangles and 2048^2 (the lighting

@@ -1,5 +1,5 @@
 // Renders one effect-benchmark case once, on one thread, for instruction
-// counting under valgrind --tool=callgrind (bench/callgrind_effects.py).
+// counting under valgrind --tool=callgrind (bench/report.py callgrind).
 // Instruction counts do not depend on what else the machine is doing, so they
 // back up the wall-clock tables of bench_effects on a shared machine.
 #include <cstdio>
