@@ -89,7 +89,9 @@ Color heat(double error) {
 
 void write_error_time_plot(const std::string& path, const std::string& title,
                            const std::vector<PlotPoint>& points, const std::vector<std::size_t>& front) {
-    const int width = 1250, height = 600, left = 90, right = 350, top = 60, bottom = 70;
+    // Tall enough for the list of the front's configurations beside the plot.
+    const int width = 1250, left = 90, right = 350, top = 60, bottom = 70;
+    const int height = std::max(600, top + 17 * static_cast<int>(front.size() + 1) + 30);
     ImageBuf buf(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
     const float white[3] = {1, 1, 1};
     OIIO::ImageBufAlgo::fill(buf, white);
