@@ -13,8 +13,9 @@
 # --quick runs a small subset of each, in seconds to a few minutes, to check
 # that everything works; its numbers are not for the docs.
 # Environment: BUILD_DIR (default build/bench-release), REPEAT (timed rounds, default 5).
-# Needs the packages of cmake/debian-packages.txt (Google Benchmark, OSMesa for
-# llvmpipe, valgrind for --callgrind) and Debian's /usr/bin/python3.
+# Needs the packages of cmake/debian-packages.txt (Google Benchmark; OSMesa for
+# llvmpipe) and Debian's /usr/bin/python3; --callgrind also needs valgrind
+# (apt-get install valgrind: a measuring tool, not in the package list).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -24,8 +25,13 @@ python=/usr/bin/python3
 [ -x "$python" ] || python=python3
 
 usage() {
-  sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
+}
+
+# need_valgrind: --callgrind without valgrind is an error, not an empty table.
+need_valgrind() {
+  command -v valgrind >/dev/null || { echo "run.sh: --callgrind needs valgrind (apt-get install valgrind)" >&2; exit 1; }
 }
 
 # build TARGET...: configures once (Release, benchmarks on, warnings as errors) and builds only these targets.
@@ -55,7 +61,7 @@ effects() {
   while [ $# -gt 0 ]; do
     case "$1" in
       --quick) repetitions=2 min_time=0.01 flags+=(--benchmark_filter='mesh=icosphere-1k/.*/threads=1') ;;
-      --callgrind) callgrind=1 ;;
+      --callgrind) need_valgrind; callgrind=1 ;;
       *) flags+=("$1") ;;
     esac
     shift
@@ -88,7 +94,7 @@ speed() {
     case "$1" in
       --quick) scenes="icosphere-9.7k spot"; repeat=3 ;;
       --steps) steps=1 ;;
-      --callgrind) callgrind=1 ;;
+      --callgrind) need_valgrind; callgrind=1 ;;
       *) echo "run.sh speed: unknown argument $1" >&2; exit 2 ;;
     esac
     shift
