@@ -8,9 +8,9 @@
 // and two more at one size each:
 //   * lighting:  the 15,680-triangle sphere at 1024^2, flat/Gouraud/Phong x
 //                ambient, diffuse, specular and full lighting;
-//   * meshes:    each mesh of ../shared/assets at 512^2 (with the cameras of
-//                its README, framed by io::frame_mesh), Gouraud and Phong; skipped, saying so, when the
-//                folder is absent.
+//   * meshes:    each mesh of ../shared/assets at 512^2, framed by io::frame_mesh
+//                along the view its README suggests, Gouraud and Phong; skipped,
+//                saying so, when the folder is absent.
 // Each benchmark reports the counters `triangles` and `samples` (samples shaded)
 // so bench/report.py scaling can fit time against both on log-log axes.
 //
