@@ -13,6 +13,9 @@
         quantity), the shader x lighting and shared-mesh cases, 2-thread speed-ups
   bench/report.py llvmpipe FILE...
         bench_llvmpipe's tables (one process per thread count) as one table
+  bench/report.py instructions PROGRAM [ARGUMENT...]
+        the instructions one run of PROGRAM executes inside the render pipeline
+        (valgrind --tool=callgrind), e.g. bench_speed_once --repeat 1 --warmup 0
 
 bench/run.sh calls it. Python 3 standard library only: Debian's
 /usr/bin/python3 runs it as it is.
@@ -136,6 +139,8 @@ def llvmpipe_command(args):
     return 0
 
 
+# Counting starts and stops at the render pipeline's entry (float precision): no scene
+# generation, no process start-up. The one place that names it.
 TOGGLE = "*Pipeline<float>::run*"
 
 
@@ -231,8 +236,17 @@ def callgrind_command(args):
     return 0
 
 
+def instructions_command(args):
+    """bench/report.py instructions PROGRAM [ARGUMENT...]: one run's instructions inside the render pipeline."""
+    if not args:
+        sys.stderr.write(instructions_command.__doc__ + "\n")
+        return 2
+    print(count(args[0], args[1:])[0])
+    return 0
+
+
 COMMANDS = {"effects": effects_command, "callgrind": callgrind_command, "scaling": scaling_command,
-            "llvmpipe": llvmpipe_command}
+            "llvmpipe": llvmpipe_command, "instructions": instructions_command}
 
 
 def main(argv):

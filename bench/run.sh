@@ -138,8 +138,7 @@ speed() {
     for scene in icosphere-9.7k suzanne; do
       for shader in gouraud phong; do
         local n
-        n=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null '--toggle-collect=*Pipeline<float>::run*' \
-          "$bin" --scene "$scene" --shader "$shader" --repeat 1 --warmup 0 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p')
+        n=$("$python" bench/report.py instructions "$bin" --scene "$scene" --shader "$shader" --repeat 1 --warmup 0)
         echo "| $scene | $shader | $(awk -v n="$n" 'BEGIN { printf "%.2f", n / 1e6 }') |"
       done
     done
