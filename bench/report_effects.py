@@ -13,6 +13,7 @@ With --clock=cpu: 1-thread runs only, by the CPU time of the rendering thread
 Python 3 standard library only.
 """
 import json
+import statistics
 import sys
 
 EFFECTS = ["ambient", "diffuse", "specular", "full", "full-kd0", "full-ks0"]
@@ -248,10 +249,10 @@ def context_lines(context, runs):
     waits = sorted(e["ms"] / e["cpu_ms"] for e in runs.runs.values()
                    if e["fields"].get("threads") == "1" and e.get("cpu_ms"))
     if waits:
-        lines.append(f"- load check: 1-thread runs took {waits[len(waits) // 2]:.2f}x their CPU time in wall time "
+        lines.append(f"- load check: 1-thread runs took {statistics.median(waits):.2f}x their CPU time in wall time "
                      f"(median; worst {waits[-1]:.2f}x); 1.00 means the machine was otherwise idle")
     if cvs:
-        lines.append(f"- spread between repetitions (coefficient of variation): median {100 * cvs[len(cvs) // 2]:.1f}%, "
+        lines.append(f"- spread between repetitions (coefficient of variation): median {100 * statistics.median(cvs):.1f}%, "
                      f"worst {100 * cvs[-1]:.1f}%")
     return lines
 
