@@ -16,8 +16,8 @@
 // llvmpipe's thread count comes from the LP_NUM_THREADS environment variable,
 // read once when the first context is created: set it before constructing
 // the first LlvmpipeRenderer in a process.
-#ifndef PHONGRAST_BENCH_LLVMPIPE_LLVMPIPE_RENDERER_HPP
-#define PHONGRAST_BENCH_LLVMPIPE_LLVMPIPE_RENDERER_HPP
+#ifndef PHONGRAST_SUPPORT_LLVMPIPE_RENDERER_HPP
+#define PHONGRAST_SUPPORT_LLVMPIPE_RENDERER_HPP
 
 #include <cstdint>
 #include <memory>
@@ -26,7 +26,7 @@
 
 #include "phongrast/phongrast.hpp"
 
-namespace llvmpipe_compare {
+namespace phongrast::support {
 
 /// Wall times of one llvmpipe frame, in seconds.
 struct FrameTimes {
@@ -62,6 +62,6 @@ private:
     std::unique_ptr<State> state_;
 };
 
-}  // namespace llvmpipe_compare
+}  // namespace phongrast::support
 
-#endif  // PHONGRAST_BENCH_LLVMPIPE_LLVMPIPE_RENDERER_HPP
+#endif  // PHONGRAST_SUPPORT_LLVMPIPE_RENDERER_HPP

@@ -1,7 +1,7 @@
 // The Pareto front of (time, error) points: the configurations no other one
 // beats on both at once (header-only, shared with the tests).
-#ifndef PHONGRAST_BENCH_ACCURACY_PARETO_HPP
-#define PHONGRAST_BENCH_ACCURACY_PARETO_HPP
+#ifndef PHONGRAST_SUPPORT_PARETO_HPP
+#define PHONGRAST_SUPPORT_PARETO_HPP
 
 #include <algorithm>
 #include <cstddef>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace phongrast::accuracy {
+namespace phongrast::support {
 
 /// True when a is at least as fast and as accurate as b, and better in one.
 inline bool dominates(double time_a, double error_a, double time_b, double error_b) {
@@ -36,6 +36,6 @@ inline std::vector<std::size_t> pareto_front(const std::vector<double>& times,
     return front;
 }
 
-}  // namespace phongrast::accuracy
+}  // namespace phongrast::support
 
-#endif  // PHONGRAST_BENCH_ACCURACY_PARETO_HPP
+#endif  // PHONGRAST_SUPPORT_PARETO_HPP

@@ -1,20 +1,19 @@
-#!/usr/bin/env python3
-"""Turns bench_effects' JSON output into the Markdown tables of docs/performance.md.
-
-Usage: effects_table.py [--clock=cpu] RESULTS.json [NOTE ...] [> tables.md]
---clock=cpu: 1-thread runs only, by the CPU time of the rendering thread
-(robust when other processes compete for the cores); default: wall-clock.
-(each NOTE becomes a line of the run's description, e.g. the load average)
+"""bench_effects' JSON output as the Markdown tables of docs/performance.md
+(`bench/report.py effects`), and the least-squares and unit helpers the other
+tables of bench/report.py share.
 
 Reads the median (and cv) aggregates of a run made with
 --benchmark_repetitions=N --benchmark_report_aggregates_only=true, and prints:
   * each effect set's median time, specialised kernel against the general one
     (RenderOptions::specialize_effects = false, the baseline in the same run);
-  * the issue's targets: ambient-only Phong against ambient-only Gouraud, a
-    least-squares line through time against lights, the culling speedup.
+  * ambient-only Phong against ambient-only Gouraud, a least-squares line
+    through time against lights, the culling speedup.
+With --clock=cpu: 1-thread runs only, by the CPU time of the rendering thread
+(robust when other processes compete for the cores); default: wall-clock.
 Python 3 standard library only.
 """
 import json
+import statistics
 import sys
 
 EFFECTS = ["ambient", "diffuse", "specular", "full", "full-kd0", "full-ks0"]
@@ -104,14 +103,20 @@ def ratio(a, b):
     return "—" if a is None or b is None or b == 0 else f"{a / b:.2f}"
 
 
-def fit_line(xs, ys):
-    """Least squares y = a + b x; returns (a, b, r2, worst relative residual)."""
+def least_squares(xs, ys):
+    """The line y = a + b x nearest the points; returns (a, b), b = nan for one distinct x."""
     n = len(xs)
     mx, my = sum(xs) / n, sum(ys) / n
     sxx = sum((x - mx) ** 2 for x in xs)
     sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
-    b = sxy / sxx
-    a = my - b * mx
+    b = sxy / sxx if sxx > 0 else float("nan")
+    return my - b * mx, b
+
+
+def fit_line(xs, ys):
+    """Least squares y = a + b x; returns (a, b, r2, worst relative residual)."""
+    a, b = least_squares(xs, ys)
+    my = sum(ys) / len(ys)
     ss_tot = sum((y - my) ** 2 for y in ys)
     ss_res = sum((y - (a + b * x)) ** 2 for x, y in zip(xs, ys))
     r2 = 1.0 - ss_res / ss_tot if ss_tot > 0 else 1.0
@@ -244,10 +249,10 @@ def context_lines(context, runs):
     waits = sorted(e["ms"] / e["cpu_ms"] for e in runs.runs.values()
                    if e["fields"].get("threads") == "1" and e.get("cpu_ms"))
     if waits:
-        lines.append(f"- load check: 1-thread runs took {waits[len(waits) // 2]:.2f}x their CPU time in wall time "
+        lines.append(f"- load check: 1-thread runs took {statistics.median(waits):.2f}x their CPU time in wall time "
                      f"(median; worst {waits[-1]:.2f}x); 1.00 means the machine was otherwise idle")
     if cvs:
-        lines.append(f"- spread between repetitions (coefficient of variation): median {100 * cvs[len(cvs) // 2]:.1f}%, "
+        lines.append(f"- spread between repetitions (coefficient of variation): median {100 * statistics.median(cvs):.1f}%, "
                      f"worst {100 * cvs[-1]:.1f}%")
     return lines
 
@@ -262,12 +267,12 @@ def use_cpu_clock(raw):
     return kept
 
 
-def main(argv):
-    args = argv[1:]
+def effects_command(args):
+    """bench/report.py effects [--clock=cpu] RESULTS.json [NOTE ...]: each NOTE becomes a line of the run's description."""
     cpu_clock = "--clock=cpu" in args
     args = [a for a in args if a != "--clock=cpu"]
     if not args:
-        sys.stderr.write(__doc__)
+        sys.stderr.write(effects_command.__doc__ + "\n")
         return 2
     context, raw = load(args[0])
     out = context_lines(context, Runs(raw)) + [f"- {note}" for note in args[1:]]
@@ -289,7 +294,3 @@ def main(argv):
     culling_table(runs, out)
     print("\n".join(out))
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv))

@@ -16,7 +16,7 @@
 
 #include <glm/geometric.hpp>
 
-namespace llvmpipe_compare {
+namespace phongrast::support {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -398,7 +398,7 @@ std::string LlvmpipeRenderer::description() const {
     return text(GL_RENDERER) + " / " + text(GL_VERSION);
 }
 
-}  // namespace llvmpipe_compare
+}  // namespace phongrast::support
 
 // Mesa 22.3's OSMesa never frees the framebuffers OSMesaMakeCurrent creates
 // (about 1 KB per process, all allocated inside libOSMesa). LeakSanitizer reads

@@ -1,5 +1,5 @@
 // The configurations the accuracy report renders: a shader plus the accuracy
-// switches of RenderOptions (header-only, shared with the tests).
+// switches of RenderOptions (header-only; the report and its tests use them).
 //
 //   axis            values
 //   shader          flat, gouraud, phong
@@ -12,8 +12,8 @@
 //
 // The reference is the most accurate setting the library has: Phong, the
 // exact preset, a depth buffer, 8x8 ordered samples and double precision.
-#ifndef PHONGRAST_BENCH_ACCURACY_CONFIGURATIONS_HPP
-#define PHONGRAST_BENCH_ACCURACY_CONFIGURATIONS_HPP
+#ifndef PHONGRAST_SUPPORT_ACCURACY_CONFIGURATIONS_HPP
+#define PHONGRAST_SUPPORT_ACCURACY_CONFIGURATIONS_HPP
 
 #include <functional>
 #include <string>
@@ -21,7 +21,7 @@
 
 #include "phongrast/render.hpp"
 
-namespace phongrast::accuracy {
+namespace phongrast::support {
 
 struct Configuration {
     Shader shader = Shader::phong;
@@ -135,6 +135,6 @@ inline std::vector<Configuration> every_combination() {
     return result;
 }
 
-}  // namespace phongrast::accuracy
+}  // namespace phongrast::support
 
-#endif  // PHONGRAST_BENCH_ACCURACY_CONFIGURATIONS_HPP
+#endif  // PHONGRAST_SUPPORT_ACCURACY_CONFIGURATIONS_HPP

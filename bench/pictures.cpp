@@ -1,4 +1,4 @@
-#include "report_images.hpp"
+#include "pictures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,9 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
-namespace phongrast::accuracy {
+#include "support/image_compare.hpp"
+
+namespace phongrast_bench {
 namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
@@ -53,6 +55,16 @@ void save(ImageBuf& buf, const std::string& path) {
     }
 }
 
+/// An RGB float buffer of rows x columns pixels, row-major.
+void save_rgb(const std::string& path, int rows, int columns, const std::vector<float>& rgb) {
+    ImageBuf buf(OIIO::ImageSpec(columns, rows, 3, OIIO::TypeDesc::FLOAT), const_cast<float*>(rgb.data()));
+    ImageBuf copy;
+    copy.copy(buf, OIIO::TypeDesc::UINT8);
+    save(copy, path);
+}
+
+float clamp01(float value) { return std::clamp(value, 0.0f, 1.0f); }
+
 std::string decade_label(int exponent, const char* unit) {
     char buffer[32];
     if (exponent >= 0 && exponent <= 3) {
@@ -77,7 +89,9 @@ Color heat(double error) {
 
 void write_error_time_plot(const std::string& path, const std::string& title,
                            const std::vector<PlotPoint>& points, const std::vector<std::size_t>& front) {
-    const int width = 900, height = 600, left = 90, right = 30, top = 60, bottom = 70;
+    // Tall enough for the list of the front's configurations beside the plot.
+    const int width = 1250, left = 90, right = 350, top = 60, bottom = 70;
+    const int height = std::max(600, top + 17 * static_cast<int>(front.size() + 1) + 30);
     ImageBuf buf(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
     const float white[3] = {1, 1, 1};
     OIIO::ImageBufAlgo::fill(buf, white);
@@ -130,7 +144,27 @@ void write_error_time_plot(const std::string& path, const std::string& title,
         if (p.kind == PointKind::screened) continue;
         const Color c = p.kind == PointKind::from_seed ? kSeed : p.kind == PointKind::from_exact ? kExact : kFront;
         box(buf, px(p.milliseconds), py(p.rmse), 3, c);
-        if (!p.label.empty()) text(buf, px(p.milliseconds) + 6, py(p.rmse) - 4, p.label, 12, c);
+    }
+    // The front's points are numbered (alternately above and below the line, so
+    // neighbours do not overlap) and listed with their configurations on the right.
+    std::vector<bool> on_front(points.size(), false);
+    for (std::size_t k = 0; k < front.size(); ++k) {
+        const PlotPoint& p = points[front[k]];
+        on_front[front[k]] = true;
+        text(buf, px(p.milliseconds) + 6, py(p.rmse) + (k % 2 ? 17 : -7), std::to_string(k + 1), 12, kFront);
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const PlotPoint& p = points[i];
+        if (p.kind == PointKind::screened || p.label.empty() || on_front[i]) continue;
+        const Color c = p.kind == PointKind::from_seed ? kSeed : kExact;
+        text(buf, px(p.milliseconds) + 7, py(p.rmse) - 6, p.label, 12, c);
+    }
+    int list_y = top + 14;
+    text(buf, width - right + 14, list_y, "Pareto front, fastest first:", 13, kBlack);
+    for (std::size_t k = 0; k < front.size(); ++k) {
+        list_y += 17;
+        const std::string& label = points[front[k]].label;
+        text(buf, width - right + 14, list_y, std::to_string(k + 1) + "  " + (label.empty() ? "?" : label), 11, kFront);
     }
     for (std::size_t index : front) box(buf, px(points[index].milliseconds), py(points[index].rmse), 5, kFront, false);
 
@@ -144,7 +178,7 @@ void write_error_time_plot(const std::string& path, const std::string& title,
     legend(kSeed, "seed, and one option switched from it", 3);
     legend(kExact, "exact, and one option switched from it", 3);
     legend(kScreened, "every combination (one unwarmed run each)", 1);
-    legend(kFront, "Pareto front (line; re-timed as the others)", 3);
+    legend(kFront, "Pareto front (line; numbered, named on the right)", 3);
     save(buf, path);
 }
 
@@ -187,4 +221,36 @@ void write_panels(const std::string& path, const std::vector<Panel>& panels) {
     save(buf, path);
 }
 
-}  // namespace phongrast::accuracy
+void write_png(const std::string& path, const phongrast::Image& image) {
+    std::vector<float> rgb;
+    rgb.reserve(image.pixels.size() * 3);
+    for (const glm::vec3& p : image.pixels) rgb.insert(rgb.end(), {clamp01(p.x), clamp01(p.y), clamp01(p.z)});
+    save_rgb(path, image.rows, image.columns, rgb);
+}
+
+void write_difference_map(const std::string& path, const phongrast::Image& first, const phongrast::Image& second,
+                          const glm::vec3& background) {
+    const std::vector<double> map = phongrast::support::error_map(first, second);
+    std::vector<float> rgb;
+    rgb.reserve(map.size() * 3);
+    for (std::size_t i = 0; i < map.size(); ++i) {
+        const bool in_first = first.pixels[i] != background;
+        const bool in_second = second.pixels[i] != background;
+        glm::vec3 colour(0.0f);
+        if (in_first && !in_second) {
+            colour = {1.0f, 0.0f, 1.0f};
+        } else if (!in_first && in_second) {
+            colour = {0.0f, 1.0f, 1.0f};
+        } else if (map[i] > phongrast::support::kOneLevel) {
+            const float t = std::min(1.0f, float(map[i] / (16.0 * phongrast::support::kOneLevel)));
+            colour = {clamp01(3.0f * t), clamp01(3.0f * t - 1.0f), clamp01(3.0f * t - 2.0f)};
+            colour.x = std::max(colour.x, 0.35f);  // even 2/255 stays visible
+        } else if (in_first) {
+            colour = glm::vec3(0.15f);
+        }
+        rgb.insert(rgb.end(), {colour.x, colour.y, colour.z});
+    }
+    save_rgb(path, first.rows, first.columns, rgb);
+}
+
+}  // namespace phongrast_bench
