@@ -17,7 +17,7 @@
 namespace phongrast {
 namespace detail {
 
-/// A Renderer's state: its options, its thread arenas and every buffer a frame works in.
+/// A Renderer's state: its options, its thread arenas and the memory every frame works in.
 struct RendererState final : PassRenderer {
     RenderOptions options;
     std::vector<std::pair<int, std::unique_ptr<tbb::task_arena>>> arenas;
