@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
     using namespace phongrast::cli;
     CLI::App app("phongrast " PHONGRAST_VERSION_STRING
                  ": a software renderer with Phong lighting and painter's order. "
-                 "Scene files follow ../shared/scene-format.md.",
+                 "Scene files follow docs/scene-format.md.",
                  "phongrast");
     app.set_version_flag("--version", "phongrast " PHONGRAST_VERSION_STRING);
     app.require_subcommand(1);

@@ -82,24 +82,11 @@ std::string stats_json(const Timing& timing, const RenderStats& stats, const Sce
                                                                                     : "auto"},
                          {"threads", options.threads},
                          {"samples_per_axis", options.samples_per_axis}};
-    document["stats"] = {{"triangles_in", stats.triangles_in},
-                         {"triangles_culled", stats.triangles_culled},
-                         {"triangles_degenerate", stats.triangles_degenerate},
-                         {"triangles_dropped", stats.triangles_dropped},
-                         {"triangles_clipped", stats.triangles_clipped},
-                         {"triangles_outside", stats.triangles_outside},
-                         {"triangles_between_samples", stats.triangles_between_samples},
-                         {"triangles_drawn", stats.triangles_drawn},
-                         {"samples_covered", stats.samples_covered},
-                         {"samples_shaded", stats.samples_shaded},
-                         {"nonfinite_values_replaced", stats.nonfinite_values_replaced},
-                         {"ambient_evaluations", stats.ambient_evaluations},
-                         {"diffuse_evaluations", stats.diffuse_evaluations},
-                         {"specular_evaluations", stats.specular_evaluations},
-                         {"normal_interpolations", stats.normal_interpolations},
-                         {"effects", to_string(stats.effects)},
-                         {"back_faces_culled", stats.back_faces_culled},
-                         {"seconds", stats.seconds}};
+    nlohmann::ordered_json& counts = document["stats"];
+    for (const RenderCounter& counter : render_counters()) counts[counter.name] = stats.*counter.field;
+    counts["effects"] = to_string(stats.effects);
+    counts["back_faces_culled"] = stats.back_faces_culled;
+    counts["seconds"] = stats.seconds;
     return document.dump(2) + "\n";
 }
 

@@ -141,7 +141,7 @@ def llvmpipe_command(args):
 
 # Counting starts and stops at the render pipeline's entry (float precision): no scene
 # generation, no process start-up. The one place that names it.
-TOGGLE = "*Pipeline<float>::run*"
+TOGGLE = "*render_pass<float>*"
 
 
 def count(binary, args, function=None):

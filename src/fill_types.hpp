@@ -33,7 +33,7 @@ struct DrawTriangle {
     Vec3<Real> centroid;         ///< camera space, of the source triangle (seed light vectors)
 };
 
-/// The rows of the image one task fills, and what it counts.
+/// The rows of the image (in samples) one task fills, and what it counts.
 template <typename Real>
 struct FillTarget {
     Image& image;

@@ -55,6 +55,33 @@ PhongMaterial to_phong(const tinyobj::material_t& material) {
     return phong;
 }
 
+// Each face as a fan (v0 v_k v_k+1, the contract's order); the material of the
+// first face that names one.
+void add_faces(const std::vector<tinyobj::shape_t>& shapes, const std::vector<tinyobj::material_t>& materials,
+               ObjFile& result) {
+    Mesh& mesh = result.mesh;
+    for (const tinyobj::shape_t& shape : shapes) {
+        std::size_t corner = 0;
+        for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
+            const std::size_t corners = shape.mesh.num_face_vertices[face];
+            auto vertex = [&](std::size_t k) {
+                return static_cast<std::uint32_t>(shape.mesh.indices[corner + k].vertex_index);
+            };
+            for (std::size_t k = 1; k + 1 < corners; ++k) {  // fan: v0 v_k v_k+1
+                mesh.triangles.push_back({vertex(0), vertex(k), vertex(k + 1)});
+            }
+            if (!result.material && face < shape.mesh.material_ids.size()) {
+                const int id = shape.mesh.material_ids[face];
+                if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
+                    result.material = to_phong(materials[static_cast<std::size_t>(id)]);
+                    result.material_name = materials[static_cast<std::size_t>(id)].name;
+                }
+            }
+            corner += corners;
+        }
+    }
+}
+
 }  // namespace
 
 ObjFile read_obj(const std::string& path) {
@@ -99,26 +126,7 @@ ObjFile read_obj(const std::string& path) {
         }
     }
 
-    for (const tinyobj::shape_t& shape : shapes) {
-        std::size_t corner = 0;
-        for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
-            const std::size_t corners = shape.mesh.num_face_vertices[face];
-            auto vertex = [&](std::size_t k) {
-                return static_cast<std::uint32_t>(shape.mesh.indices[corner + k].vertex_index);
-            };
-            for (std::size_t k = 1; k + 1 < corners; ++k) {  // fan: v0 v_k v_k+1
-                mesh.triangles.push_back({vertex(0), vertex(k), vertex(k + 1)});
-            }
-            if (!result.material && face < shape.mesh.material_ids.size()) {
-                const int id = shape.mesh.material_ids[face];
-                if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
-                    result.material = to_phong(materials[static_cast<std::size_t>(id)]);
-                    result.material_name = materials[static_cast<std::size_t>(id)].name;
-                }
-            }
-            corner += corners;
-        }
-    }
+    add_faces(shapes, materials, result);
     try {
         validate_mesh(mesh);  // the core's own check: a last guard, the pre-check should catch everything
     } catch (const std::invalid_argument& error) {

@@ -1,4 +1,4 @@
-// Wavefront OBJ meshes in and out, as ../shared/scene-format.md ("mesh") reads them:
+// Wavefront OBJ meshes in and out, as docs/scene-format.md ("mesh") reads them:
 // `v x y z [r g b]` positions with optional colours in [0,1] (vertices without
 // a colour are white), faces of 3 or more vertices triangulated as a fan
 // (v0 v1 v2, v0 v2 v3, ...), negative (relative) indices, and the MTL
