@@ -1,5 +1,6 @@
 #include "scene_setup.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <sstream>
 
@@ -7,7 +8,7 @@
 #include "phongrast/io/auto_scene.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
-#include "phongrast/io/obj_file.hpp"
+#include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/scene_file.hpp"
 
 namespace phongrast::cli {
@@ -15,16 +16,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool is_obj(const std::string& path) {
-    std::string extension = fs::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".obj";
-}
-
-io::ObjFile load_mesh(const std::string& path, const Messages& messages) {
-    io::ObjFile obj = io::read_obj(path);
-    for (const std::string& warning : obj.warnings) messages.warning(warning);
-    return obj;
+io::MeshFile load_mesh(const std::string& path, const Messages& messages, double& seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    io::MeshFile mesh = io::read_mesh(path);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (const std::string& warning : mesh.warnings) messages.warning(warning);
+    return mesh;
 }
 
 std::string describe(const PhongMaterial& m) {
@@ -77,7 +74,7 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         input = find_default_scene();
         messages.note("rendering the default scene " + input);
     }
-    if (!input.empty() && is_obj(input)) {
+    if (!input.empty() && io::has_mesh_extension(input)) {
         if (!mesh_path.empty()) {
             throw std::invalid_argument("--mesh: give either a mesh as the input or --mesh, not both");
         }
@@ -93,7 +90,7 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
     bool auto_framed = false;
     if (input.empty()) {
         // Only a mesh: frame it and tell the user what was chosen.
-        io::ObjFile obj = load_mesh(mesh_path, messages);
+        io::MeshFile obj = load_mesh(mesh_path, messages, prepared.load_seconds);
         const std::optional<PhongMaterial> mtl = obj.material;
         scene = io::frame_mesh(std::move(obj.mesh), rows, columns);
         if (mtl) scene.material = *mtl;
@@ -105,7 +102,7 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         if (!mesh_path.empty()) {
             file.mesh_path = mesh_path;
         } else if (file.mesh_path.empty()) {
-            throw io::FileError(input + ": /mesh: missing required field; expected an OBJ file name (or give --mesh)");
+            throw io::FileError(input + ": /mesh: missing required field; expected a mesh file name (.obj, .ply, .stl, .gltf, .glb; or give --mesh)");
         }
         std::error_code error;
         if (mesh_path.empty() && !fs::exists(file.mesh_path, error)) {
@@ -113,7 +110,7 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
             throw io::FileError(input + ": /mesh: " + file.mesh_path +
                                 ": mesh not found (no such file; a relative \"mesh\" is relative to the scene file)");
         }
-        io::ObjFile obj = load_mesh(file.mesh_path, messages);
+        io::MeshFile obj = load_mesh(file.mesh_path, messages, prepared.load_seconds);
         scene = std::move(file.scene);
         scene.mesh = std::move(obj.mesh);
         std::vector<std::string> defaults_used;

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "file_bytes.hpp"
+#include "mesh_readers.hpp"
 #include "obj_chunk.hpp"
 #include "obj_materials.hpp"
 #include "phongrast/io/error.hpp"
@@ -133,9 +134,8 @@ std::vector<ObjMaterialUse> material_uses(const std::vector<ObjChunk>& chunks, c
 
 }  // namespace
 
-ObjFile read_obj(const std::string& path) {
-    const FileBytes bytes = FileBytes::read(path, "mesh");
-    const std::vector<std::string_view> texts = split_into_chunks(bytes.view());
+MeshFile parse_obj(std::string_view text, const std::string& path) {
+    const std::vector<std::string_view> texts = split_into_chunks(text);
     std::vector<ObjChunk> chunks(texts.size());
     if (texts.size() == 1) {
         chunks[0] = parse_obj_chunk(texts[0]);  // small files: no task overhead
@@ -152,13 +152,11 @@ ObjFile read_obj(const std::string& path) {
     result.material = material.material;
     result.material_name = std::move(material.name);
     result.warnings = std::move(material.warnings);
-    try {
-        validate_mesh(result.mesh);  // the core's own check: a last guard, the parser should catch everything
-    } catch (const std::invalid_argument& error) {
-        throw FileError(path + ": " + error.what());
-    }
+    check_mesh(result.mesh, path);
     return result;
 }
+
+ObjFile read_obj(const std::string& path) { return parse_obj(FileBytes::read(path, "mesh").view(), path); }
 
 void write_obj(const Mesh& mesh, const std::string& path, const std::string& comment,
                int significant_digits) {

@@ -3,7 +3,8 @@
 // (.gltf with its buffers, or .glb). read_mesh picks the reader by the file's
 // content when it is unambiguous (a "ply" line, a "glTF" magic, "solid ..."
 // followed by "facet", a binary STL whose size matches its triangle count),
-// else by the extension.
+// else by the extension. The writers exist for tests, benchmarks and
+// conversions; each writes a temporary file renamed into place.
 #ifndef PHONGRAST_IO_MESH_FILE_HPP
 #define PHONGRAST_IO_MESH_FILE_HPP
 
@@ -46,6 +47,17 @@ MeshFile read_mesh(const std::string& path);
 MeshFile read_ply(const std::string& path);
 MeshFile read_stl(const std::string& path);
 MeshFile read_gltf(const std::string& path);
+
+enum class PlyEncoding { ascii, binary_little_endian, binary_big_endian };
+
+/// PLY: double x y z, float red green blue when the mesh has colours, int
+/// vertex_indices (ASCII with 17 significant digits: every double exactly).
+void write_ply(const Mesh& mesh, const std::string& path, PlyEncoding encoding = PlyEncoding::binary_little_endian);
+/// STL (binary or ASCII): positions rounded to float, colours dropped, each
+/// triangle's facet normal from its corners.
+void write_stl(const Mesh& mesh, const std::string& path, bool binary = true);
+/// GLB: one mesh, one node, float positions, COLOR_0 when the mesh has colours.
+void write_glb(const Mesh& mesh, const std::string& path);
 
 }  // namespace phongrast::io
 
