@@ -23,10 +23,10 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$sanitizers" \
   -DPHONGRAST_BUILD_FUZZERS=ON -DPHONGRAST_BUILD_IO=ON -DPHONGRAST_BUILD_APPS=OFF \
   -DPHONGRAST_BUILD_TESTS=OFF -DPHONGRAST_INSTALL=OFF -DPHONGRAST_WERROR=ON
-cmake --build "$build" -j2 --target fuzz_obj fuzz_scene
+cmake --build "$build" -j2 --target fuzz_obj fuzz_ply fuzz_stl fuzz_gltf fuzz_scene
 
 mkdir -p "$build/findings"
-for target in fuzz_obj fuzz_scene; do
+for target in fuzz_obj fuzz_ply fuzz_stl fuzz_gltf fuzz_scene; do
   name="${target#fuzz_}"
   # New inputs go to a scratch corpus so the repository's seeds stay as they are.
   work="$build/corpus/$name"

@@ -233,6 +233,9 @@ void GltfScene::add_primitive(const json& primitive, const glm::dmat4& world, co
     }
     Mesh& mesh = file_.mesh;
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.reserve(mesh.positions.size() + positions.size());
+    mesh.colors.reserve(mesh.colors.size() + positions.size());
+    mesh.triangles.reserve(mesh.triangles.size() + indices.size() / 3);
     for (std::size_t i = 0; i < positions.size(); ++i) {
         const glm::dvec3 p = glm::dvec3(world * glm::dvec4(positions[i], 1.0));
         if (!std::isfinite(p.x + p.y + p.z)) gltf_fail(path_, where, "a transformed position is not finite");

@@ -7,10 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <numeric>
 
 #include <fast_float/fast_float.h>
-#include <tbb/parallel_sort.h>
 
 #include "mesh_readers.hpp"
 #include "phongrast/io/error.hpp"
@@ -124,32 +122,33 @@ bool looks_ascii(std::string_view bytes) {
 }  // namespace
 
 Mesh weld_corners(const std::vector<glm::dvec3>& corners) {
-    // Sort corner numbers by position (ties by number), so each position's
-    // first corner leads its run; then number the leaders in file order.
-    std::vector<std::uint32_t> order(corners.size());
-    std::iota(order.begin(), order.end(), 0u);
-    tbb::parallel_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const glm::dvec3& p = corners[a];
-        const glm::dvec3& q = corners[b];
-        if (p.x != q.x) return p.x < q.x;
-        if (p.y != q.y) return p.y < q.y;
-        if (p.z != q.z) return p.z < q.z;
-        return a < b;
-    });
-    std::vector<std::uint32_t> leader(corners.size());
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        const bool same = i > 0 && corners[order[i]] == corners[order[i - 1]];
-        leader[order[i]] = same ? leader[order[i - 1]] : order[i];
-    }
+    // Open addressing over a power-of-two table at most half full: each corner
+    // finds the first earlier corner at its position, or becomes a new vertex.
+    std::size_t capacity = 16;
+    while (capacity < 2 * corners.size()) capacity *= 2;
+    constexpr std::uint32_t empty = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> slots(capacity, empty);  // vertex numbers
+    const auto hash = [](const glm::dvec3& p) {
+        std::uint64_t h = 0x9E3779B97F4A7C15ull;
+        for (int k = 0; k < 3; ++k) {
+            const double value = p[k] + 0.0;  // -0 and +0 are one position
+            std::uint64_t bits = 0;
+            std::memcpy(&bits, &value, sizeof bits);
+            h = (h ^ bits) * 0xFF51AFD7ED558CCDull;
+            h ^= h >> 32;
+        }
+        return h;
+    };
     Mesh mesh;
-    std::vector<std::uint32_t> vertex(corners.size());
     mesh.triangles.resize(corners.size() / 3);
     for (std::size_t c = 0; c < corners.size(); ++c) {
-        if (leader[c] == c) {
-            vertex[c] = static_cast<std::uint32_t>(mesh.positions.size());
+        std::size_t slot = hash(corners[c]) & (capacity - 1);
+        while (slots[slot] != empty && mesh.positions[slots[slot]] != corners[c]) slot = (slot + 1) & (capacity - 1);
+        if (slots[slot] == empty) {
+            slots[slot] = static_cast<std::uint32_t>(mesh.positions.size());
             mesh.positions.push_back(corners[c]);
         }
-        mesh.triangles[c / 3][c % 3] = vertex[leader[c]];
+        mesh.triangles[c / 3][c % 3] = slots[slot];
     }
     return mesh;
 }
