@@ -5,11 +5,16 @@
 // (default /tmp/phongrast-loading), 10k to $PHONGRAST_LOADING_MAX_TRIANGLES
 // (default 1M; 8M for the full table) triangles. Medians come from Google
 // Benchmark's repetitions; bench/loading_table.py turns the JSON into the
-// table of docs/loading.md.
+// table of docs/loading.md. $PHONGRAST_LOADING_EXTRA may name more files
+// (':'-separated, any format) to measure the same way, e.g. the issue's
+// 71 MB sphere; ../shared/assets/sphere*.obj are measured when present.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "legacy_obj_reader.hpp"
 #include "loading_meshes.hpp"
@@ -85,6 +90,22 @@ void add(const std::string& reader_name, Reader reader, const LoadingFile& file)
         ->ReportAggregatesOnly(true);
 }
 
+/// $PHONGRAST_LOADING_EXTRA's files, and the shared assets' spheres when present.
+std::vector<std::string> extra_files() {
+    std::vector<std::string> paths;
+    const char* extra = std::getenv("PHONGRAST_LOADING_EXTRA");
+    std::istringstream list(extra != nullptr ? extra : "");
+    for (std::string path; std::getline(list, path, ':');) {
+        if (!path.empty()) paths.push_back(path);
+    }
+    std::error_code missing;
+    for (const auto& entry : std::filesystem::directory_iterator(PHONGRAST_SHARED_ASSETS_DIR, missing)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("sphere", 0) == 0 && entry.path().extension() == ".obj") paths.push_back(entry.path().string());
+    }
+    return paths;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -105,6 +126,18 @@ int main(int argc, char** argv) {
             if (file.format == "glb") add("tinygltf", tinygltf_reader, file);
 #endif
         }
+    }
+    for (const std::string& path : extra_files()) {
+        LoadingFile file;
+        file.format = std::filesystem::path(path).filename().string();
+        file.path = path;
+        file.bytes = std::filesystem::file_size(path);
+        file.triangles = phongrast::io::read_mesh(path).mesh.triangles.size();
+        add("phongrast", phongrast_reader, file);
+        if (std::filesystem::path(path).extension() == ".obj") add("previous", legacy_obj_reader, file);
+#ifdef PHONGRAST_BENCH_WITH_ASSIMP
+        add("assimp", assimp_reader, file);
+#endif
     }
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();

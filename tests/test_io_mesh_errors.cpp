@@ -126,6 +126,8 @@ TEST_CASE("bad glTF input") {
         {"nan.glb", glb(gltf_json("VEC3"), {0, 0, 0, 1, 0, 0, 0, std::numeric_limits<float>::quiet_NaN(), 0}, {0, 1, 2}),
          "nan.glb: /accessors/0: element 2 is not finite"},
         {"type.glb", glb(gltf_json("VEC2"), triangle, {0, 1, 2}), "type.glb: /accessors/0: type VEC2 of 5126; expected VEC3 of 5126"},
+        // Found by fuzz_gltf: no "type" gave zero-byte elements and a division by zero.
+        {"no-type.glb", glb(gltf_json(""), triangle, {0, 1, 2}), "no-type.glb: /accessors/0: type  of 5126; expected VEC3 of 5126"},
         {"extension.glb", glb(gltf_json("VEC3", R"("extensionsRequired": ["KHR_draco_mesh_compression"], )"), triangle, {0, 1, 2}),
          "extension.glb: /extensionsRequired: requires \"KHR_draco_mesh_compression\""},
         {"count.glb", glb(gltf_json("VEC3"), triangle, {0, 1}),  // the index view promises 12 bytes, 8 present

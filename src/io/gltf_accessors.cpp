@@ -76,8 +76,12 @@ GltfAccessors::View GltfAccessors::view(std::int64_t index, const char* expected
     view.component_type = static_cast<int>(gltf_integer(accessor, "componentType", where, path_));
     view.components = component_count(accessor.value("type", std::string()));
     view.count = static_cast<std::size_t>(gltf_integer(accessor, "count", where, path_, 0));
+    // "VEC3 of 5126" must be one of the comma-separated entries of `expected_types`, whole.
     const std::string type = accessor.value("type", std::string()) + " of " + std::to_string(view.component_type);
-    if (std::string(expected_types).find(type) == std::string::npos) {
+    const std::string expected = std::string(", ") + expected_types;
+    const std::size_t at = expected.find(", " + type);
+    const char after = at == std::string::npos ? '\0' : expected[at + 2 + type.size()];
+    if (view.components == 0 || at == std::string::npos || (after != ',' && after != ' ')) {
         gltf_fail(path_, where, "type " + type + "; expected " + expected_types);
     }
     const std::int64_t buffer_view = gltf_integer(accessor, "bufferView", where, path_);
@@ -140,14 +144,14 @@ std::vector<glm::dvec3> GltfAccessors::positions(std::int64_t accessor) const {
 }
 
 std::vector<std::uint32_t> GltfAccessors::indices(std::int64_t accessor) const {
-    const View v = view(accessor, "SCALAR of 5121, SCALAR of 5123 or SCALAR of 5125 (unsigned byte, short or int)");
+    const View v = view(accessor, "SCALAR of 5121, SCALAR of 5123, SCALAR of 5125 (unsigned byte, short or int)");
     std::vector<std::uint32_t> result(v.count);
     for (std::size_t i = 0; i < v.count; ++i) result[i] = static_cast<std::uint32_t>(component(v, i, 0));
     return result;
 }
 
 std::vector<glm::vec3> GltfAccessors::colors(std::int64_t accessor) const {
-    const View v = view(accessor, "VEC3 of 5126, VEC4 of 5126, VEC3 of 5121, VEC4 of 5121, VEC3 of 5123 or VEC4 of "
+    const View v = view(accessor, "VEC3 of 5126, VEC4 of 5126, VEC3 of 5121, VEC4 of 5121, VEC3 of 5123, VEC4 of "
                                   "5123 (float, normalised unsigned byte or short)");
     const double scale = v.component_type == unsigned_byte ? 1.0 / 255 : v.component_type == unsigned_short ? 1.0 / 65535 : 1.0;
     std::vector<glm::vec3> result(v.count);

@@ -22,6 +22,17 @@ namespace {
 /// the per-chunk bookkeeping is noise, small enough to balance the cores.
 constexpr std::size_t chunk_bytes = std::size_t(1) << 20;
 
+/// body(i) for every chunk: on the calling thread for a single chunk (small
+/// files pay no task overhead), else in parallel.
+template <class Body>
+void for_each_chunk(std::size_t count, const Body& body) {
+    if (count == 1) {
+        body(std::size_t(0));
+    } else {
+        tbb::parallel_for(std::size_t(0), count, body, tbb::simple_partitioner());
+    }
+}
+
 std::vector<std::string_view> split_into_chunks(std::string_view text) {
     std::vector<std::string_view> chunks;
     std::size_t start = 0;
@@ -80,7 +91,7 @@ bool corners_in_range(const ObjChunk& chunk, std::int64_t vertices_before, std::
 void throw_first_error(const std::vector<std::string_view>& texts, const std::vector<ObjChunk>& chunks,
                        const ChunkStarts& starts, const std::string& path) {
     std::vector<char> bad(chunks.size(), 0);
-    tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t i) {
+    for_each_chunk(chunks.size(), [&](std::size_t i) {
         bad[i] = chunks[i].error.has_value() ||
                  !corners_in_range(chunks[i], starts.vertices[i], starts.vertices_in_file);
     });
@@ -105,7 +116,7 @@ Mesh assemble_mesh(const std::vector<ObjChunk>& chunks, const ChunkStarts& start
     mesh.positions.resize(static_cast<std::size_t>(starts.vertices_in_file));
     mesh.colors.resize(mesh.positions.size());
     mesh.triangles.resize(starts.triangles_in_file);
-    tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t i) {
+    for_each_chunk(chunks.size(), [&](std::size_t i) {
         const ObjChunk& chunk = chunks[i];
         const auto vertex_start = static_cast<std::ptrdiff_t>(starts.vertices[i]);
         std::copy(chunk.positions.begin(), chunk.positions.end(), mesh.positions.begin() + vertex_start);
@@ -137,12 +148,7 @@ std::vector<ObjMaterialUse> material_uses(const std::vector<ObjChunk>& chunks, c
 MeshFile parse_obj(std::string_view text, const std::string& path) {
     const std::vector<std::string_view> texts = split_into_chunks(text);
     std::vector<ObjChunk> chunks(texts.size());
-    if (texts.size() == 1) {
-        chunks[0] = parse_obj_chunk(texts[0]);  // small files: no task overhead
-    } else {
-        tbb::parallel_for(std::size_t(0), texts.size(), [&](std::size_t i) { chunks[i] = parse_obj_chunk(texts[i]); },
-                          tbb::simple_partitioner());
-    }
+    for_each_chunk(texts.size(), [&](std::size_t i) { chunks[i] = parse_obj_chunk(texts[i]); });
     const ChunkStarts starts = count_chunk_starts(chunks);
     throw_first_error(texts, chunks, starts, path);
 
