@@ -66,7 +66,8 @@ std::string glb(std::string json, const std::vector<float>& positions, const std
 }
 
 std::string gltf_json(const std::string& position_type, const std::string& extra = "") {
-    return R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}], )" + extra +
+    const std::string nodes = extra.find("\"nodes\"") == std::string::npos ? R"("nodes": [{"mesh": 0}], )" : "";
+    return R"({"asset": {"version": "2.0"}, )" + nodes + extra +
            R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": ")" + position_type + R"("},
                     {"bufferView": 1, "componentType": 5125, "count": 3, "type": "SCALAR"}],
@@ -116,6 +117,15 @@ TEST_CASE("bad STL input") {
     });
 }
 
+/// 20 nodes, each the parent of the next twice: 2^20 instances of the mesh.
+std::string doubling_nodes() {
+    std::string nodes = R"("nodes": [)";
+    for (int i = 0; i < 20; ++i) {
+        nodes += R"({"mesh": 0, "children": [)" + std::to_string(i + 1) + ", " + std::to_string(i + 1) + "]}, ";
+    }
+    return nodes + R"({"mesh": 0}], "scenes": [{"nodes": [0]}], )";
+}
+
 TEST_CASE("bad glTF input") {
     std::string truncated = glb(gltf_json("VEC3"), triangle, {0, 1, 2});
     truncated.resize(truncated.size() - 10);
@@ -132,6 +142,8 @@ TEST_CASE("bad glTF input") {
          "extension.glb: /extensionsRequired: requires \"KHR_draco_mesh_compression\""},
         {"count.glb", glb(gltf_json("VEC3"), triangle, {0, 1}),  // the index view promises 12 bytes, 8 present
          "count.glb: /buffers/0/byteLength: 48 bytes declared, only 44 present"},
+        {"doubling.glb", glb(gltf_json("VEC3", doubling_nodes()), triangle, {0, 1, 2}),
+         "more than 100000 node instances in the scene"},
         {"json.gltf", R"({"asset": {"version": "2.0"}, "nodes": [)", "json.gltf: malformed glTF JSON at byte"},
         {"version.gltf", R"({"asset": {"version": "1.0"}})", "version.gltf: /asset/version: '1.0'; expected 2.0"},
         {"node.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [3]}]})", "node.gltf: /nodes/3: no such node"},

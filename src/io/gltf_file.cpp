@@ -152,6 +152,11 @@ private:
         const std::string where = "/nodes/" + std::to_string(index);
         if (index < 0 || static_cast<std::size_t>(index) >= nodes.size()) gltf_fail(path_, where, "no such node");
         if (depth > 256) gltf_fail(path_, where, "nodes nested more than 256 deep (a cycle?)");
+        // A node may be the child of several parents; a graph that repeats
+        // itself could otherwise multiply the instances without end.
+        if (++visits_ > max_node_instances) {
+            gltf_fail(path_, where, "more than " + std::to_string(max_node_instances) + " node instances in the scene");
+        }
         const json& node = nodes[static_cast<std::size_t>(index)];
         if (!node.is_object()) gltf_fail(path_, where, "expected an object");
         const glm::dmat4 world = parent * local_transform(node, where, path_);
@@ -199,7 +204,9 @@ private:
     const json& document_;
     const GltfAccessors& accessors_;
     const std::string& path_;
+    static constexpr std::size_t max_node_instances = 100000;
     MeshFile file_;
+    std::size_t visits_ = 0;
     bool warned_mode_ = false;
 };
 
