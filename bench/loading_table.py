@@ -4,7 +4,7 @@
 Usage: loading_table.py results.json
 One row per format and size: phongrast's median time, MB/s and triangles/s,
 then each other reader's median time and how many times slower it is
-(its time / phongrast's time, measured in the same run).
+(its time / phongrast's time, measured in the same run; above 1 is slower).
 """
 import json
 import sys
@@ -24,7 +24,7 @@ def main(path):
         sizes[key] = run["file_MB"]
     others = ["previous", "assimp", "tinygltf"]
     print("| format | triangles | file MB | phongrast ms | MB/s | M triangles/s | "
-          + " | ".join(f"{o} ms (x slower)" for o in others) + " |")
+          + " | ".join(f"{o} ms (x phongrast)" for o in others) + " |")
     print("|---|---:|---:|---:|---:|---:|" + "---:|" * len(others))
     order = ["obj", "ply-ascii", "ply-binary", "stl-binary", "glb"]
     for key in sorted(medians, key=lambda k: (order.index(k[0]) if k[0] in order else 99, k[1])):
