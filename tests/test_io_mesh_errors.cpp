@@ -91,6 +91,8 @@ TEST_CASE("bad PLY input") {
         {"nan.ply", ply_head + ply_faces + "0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n", "nan.ply: vertex 1 (line 11): z is not a finite number"},
         {"range.ply", ply_head + ply_faces + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
          "range.ply: face 0 (line 13): vertex index 7 is out of range: the file has 3 vertices"},
+        {"float-index.ply", ply_head + "element face 1\nproperty list uchar float vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1e30\n",
+         "float-index.ply: face 0 (line 13): vertex index 1e+30 is out of range"},
         {"short.ply", ply_head + ply_faces + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "short.ply: face 0 (line 13): 2 vertices; expected at least 3"},
         {"ends.ply", ply_head + ply_faces + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n", "ends.ply: face 0 (line 14): the file ends; expected a number"},
         {"count.ply", binary_ply(1000000, bytes_of<float>({0, 0, 0})),

@@ -81,6 +81,7 @@ TEST_CASE("bad OBJ input: the message names the file, the line and what was expe
         {"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "nan.obj:2: vertex x: expected a finite number"},
         {"inf.obj", "v 0 0 0\nv 1 0 0\nv 0 1e999 0\nf 1 2 3\n", "inf.obj:3: vertex y: expected a finite number"},
         {"word.obj", "v 0 0 zero\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "word.obj:1: vertex z: expected a number"},
+        {"colour.obj", "v 0 0 0 1e300 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "colour.obj:1: vertex r: expected a colour within float range"},
         {"two.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", "two.obj:4: face with 2 vertices; expected at least 3"},
         {"empty.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "empty.obj: no faces"},
     };

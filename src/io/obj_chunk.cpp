@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 #include <fast_float/fast_float.h>
@@ -116,6 +117,9 @@ private:
             }
             if (!std::isfinite(values[i])) {
                 return fail("vertex " + name + ": expected a finite number, got '" + std::string(words[i]) + "'");
+            }
+            if (count == 6 && i >= 3 && std::abs(values[i]) > std::numeric_limits<float>::max()) {
+                return fail("vertex " + name + ": expected a colour within float range, got '" + std::string(words[i]) + "'");
             }
         }
         chunk_.positions.back() = {values[0], values[1], values[2]};

@@ -4,6 +4,7 @@
 // every other element and property is read past.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 
@@ -217,6 +218,9 @@ private:
                 const double read = value(property.type);
                 v[slots[p]] = slots[p] >= 3 ? read * color_scale(property.type) : read;
                 if (!std::isfinite(v[slots[p]])) fail(std::string(names[slots[p]]) + " is not a finite number");
+                if (slots[p] >= 3 && std::abs(v[slots[p]]) > std::numeric_limits<float>::max()) {
+                    fail(std::string(names[slots[p]]) + " is beyond the range of a float colour");
+                }
             }
             mesh.positions.emplace_back(v[0], v[1], v[2]);
             mesh.colors.emplace_back(static_cast<float>(v[3]), static_cast<float>(v[4]), static_cast<float>(v[5]));
@@ -250,9 +254,11 @@ private:
         if (count < 3) fail(std::to_string(static_cast<long long>(count)) + " vertices; expected at least 3");
         corners_.clear();
         for (double i = 0; i < count; ++i) {
-            const double index = value(property.type);
-            if (index < 0 || index >= static_cast<double>(vertex_count_)) {
-                fail("vertex index " + std::to_string(static_cast<long long>(index)) + " is out of range: the file has " +
+            const double index = value(property.type);  // a float list type may hold anything
+            if (!(index >= 0 && index < static_cast<double>(vertex_count_) && index == std::floor(index))) {
+                char shown[32];
+                std::snprintf(shown, sizeof shown, "%.17g", index);
+                fail(std::string("vertex index ") + shown + " is out of range: the file has " +
                      std::to_string(vertex_count_) + " vertices");
             }
             corners_.push_back(static_cast<std::uint32_t>(index));
