@@ -2,6 +2,7 @@
 // (binary container): every triangle primitive of every mesh instance in the
 // default scene, with its node transforms; vertex colours from COLOR_0, else
 // the material's baseColorFactor. Textures are ignored, with one warning.
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -240,9 +241,14 @@ void GltfScene::add_primitive(const json& primitive, const glm::dmat4& world, co
     }
     Mesh& mesh = file_.mesh;
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-    mesh.positions.reserve(mesh.positions.size() + positions.size());
-    mesh.colors.reserve(mesh.colors.size() + positions.size());
-    mesh.triangles.reserve(mesh.triangles.size() + indices.size() / 3);
+    // Room for this primitive, growing geometrically: an exact reserve per
+    // primitive would copy the whole mesh again for every instance.
+    const auto make_room = [](auto& items, std::size_t more) {
+        if (items.capacity() < items.size() + more) items.reserve(std::max(2 * items.capacity(), items.size() + more));
+    };
+    make_room(mesh.positions, positions.size());
+    make_room(mesh.colors, positions.size());
+    make_room(mesh.triangles, indices.size() / 3);
     for (std::size_t i = 0; i < positions.size(); ++i) {
         const glm::dvec3 p = glm::dvec3(world * glm::dvec4(positions[i], 1.0));
         if (!std::isfinite(p.x + p.y + p.z)) gltf_fail(path_, where, "a transformed position is not finite");
