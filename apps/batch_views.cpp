@@ -70,18 +70,18 @@ void make_turntable(const Scene& framed, int views, double elevation_degrees, Jo
     }
 }
 
-io::ObjFile LastMesh::read(const std::string& path) {
+io::MeshFile LastMesh::read(const std::string& path) {
     std::error_code error;
     const auto bytes = std::filesystem::file_size(path, error);
     const auto modified = std::filesystem::last_write_time(path, error);
     const std::string key = error ? "" : path + "|" + std::to_string(bytes) + "|" +
                                              std::to_string(modified.time_since_epoch().count());
-    if (key.empty() || key != key_ || !obj_) {
-        obj_.reset();
-        obj_ = io::read_obj(path);  // throws for a bad file: nothing is kept
+    if (key.empty() || key != key_ || !mesh_) {
+        mesh_.reset();
+        mesh_ = io::read_mesh(path);  // throws for a bad file: nothing is kept
         key_ = key;
     }
-    return *obj_;
+    return *mesh_;
 }
 
 JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes) {
@@ -93,7 +93,7 @@ JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes) {
     flags.mode = job.settings.mode.empty() ? "exact" : job.settings.mode;
     flags.samples = job.settings.samples.value_or(1);
     flags.threads = threads;
-    if (meshes != nullptr) flags.read_obj = [meshes](const std::string& path) { return meshes->read(path); };
+    if (meshes != nullptr) flags.read_mesh = [meshes](const std::string& path) { return meshes->read(path); };
     const Messages silent(true);  // notes for thousands of jobs would drown the progress; errors go to the log
 
     JobScenes scenes;

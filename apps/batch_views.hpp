@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "batch_manifest.hpp"
-#include "phongrast/io/obj_file.hpp"
+#include "phongrast/io/mesh_file.hpp"
 #include "scene_setup.hpp"
 
 namespace phongrast::cli {
@@ -26,11 +26,11 @@ struct JobScenes {
 /// time), so that consecutive jobs of a shard sharing a mesh parse it once.
 class LastMesh {
 public:
-    io::ObjFile read(const std::string& path);
+    io::MeshFile read(const std::string& path);
 
 private:
     std::string key_;
-    std::optional<io::ObjFile> obj_;
+    std::optional<io::MeshFile> mesh_;
 };
 
 /// Loads a job's files, meshes through `meshes` when given. Throws

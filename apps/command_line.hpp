@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "phongrast/io/obj_file.hpp"
+#include "phongrast/io/mesh_file.hpp"
 
 namespace phongrast::cli {
 
@@ -28,9 +28,9 @@ struct SceneFlags {
     int threads = 0;
     int samples = 1;
     bool quiet = false;
-    /// Reads an OBJ file; empty: io::read_obj. The batch command passes a
+    /// Reads a mesh file; empty: io::read_mesh. The batch command passes a
     /// reader that keeps the last mesh, for jobs that share it.
-    std::function<io::ObjFile(const std::string& path)> read_obj;
+    std::function<io::MeshFile(const std::string& path)> read_mesh;
 };
 
 /// Adds the positional input, -o and every scene/override flag to `command`.

@@ -1,5 +1,6 @@
 #include "scene_setup.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <sstream>
 
@@ -7,7 +8,7 @@
 #include "phongrast/io/auto_scene.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
-#include "phongrast/io/obj_file.hpp"
+#include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/scene_file.hpp"
 
 namespace phongrast::cli {
@@ -15,16 +16,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool is_obj(const std::string& path) {
-    std::string extension = fs::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".obj";
-}
-
-io::ObjFile load_mesh(const std::string& path, const SceneFlags& flags, const Messages& messages) {
-    io::ObjFile obj = flags.read_obj ? flags.read_obj(path) : io::read_obj(path);
-    for (const std::string& warning : obj.warnings) messages.warning(warning);
-    return obj;
+/// Reads a mesh in any supported format (through the batch command's cache
+/// when it passes one); `seconds` is the time it took.
+io::MeshFile load_mesh(const std::string& path, const SceneFlags& flags, const Messages& messages, double& seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    io::MeshFile mesh = flags.read_mesh ? flags.read_mesh(path) : io::read_mesh(path);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (const std::string& warning : mesh.warnings) messages.warning(warning);
+    return mesh;
 }
 
 std::string describe(const PhongMaterial& m) {
@@ -74,11 +73,11 @@ namespace {
 /// The scene branch of prepare_scene: the parsed file with its mesh loaded
 /// and its material resolved (scene, then MTL, then defaults).
 Scene scene_from_file(io::SceneFile file, const std::string& input, const std::string& mesh_override,
-                      const SceneFlags& flags, const Messages& messages) {
+                      const SceneFlags& flags, const Messages& messages, double& load_seconds) {
     if (!mesh_override.empty()) {
         file.mesh_path = mesh_override;
     } else if (file.mesh_path.empty()) {
-        throw io::FileError(input + ": /mesh: missing required field; expected an OBJ file name (or give --mesh)");
+        throw io::FileError(input + ": /mesh: missing required field; expected a mesh file name (.obj, .ply, .stl, .gltf, .glb; or give --mesh)");
     }
     std::error_code error;
     if (mesh_override.empty() && !fs::exists(file.mesh_path, error)) {
@@ -86,7 +85,7 @@ Scene scene_from_file(io::SceneFile file, const std::string& input, const std::s
         throw io::FileError(input + ": /mesh: " + file.mesh_path +
                             ": mesh not found (no such file; a relative \"mesh\" is relative to the scene file)");
     }
-    io::ObjFile obj = load_mesh(file.mesh_path, flags, messages);
+    io::MeshFile obj = load_mesh(file.mesh_path, flags, messages, load_seconds);
     Scene scene = std::move(file.scene);
     scene.mesh = std::move(obj.mesh);
     std::vector<std::string> defaults_used;
@@ -147,7 +146,7 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         input = find_default_scene();
         messages.note("rendering the default scene " + input);
     }
-    if (!input.empty() && is_obj(input)) {
+    if (!input.empty() && io::has_mesh_extension(input)) {
         if (!mesh_path.empty()) {
             throw std::invalid_argument("--mesh: give either a mesh as the input or --mesh, not both");
         }
@@ -161,7 +160,7 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         int rows = 512;
         int columns = 512;
         if (!flags.size.empty()) std::tie(columns, rows) = parse_size(flags.size);
-        io::ObjFile obj = load_mesh(mesh_path, flags, messages);
+        io::MeshFile obj = load_mesh(mesh_path, flags, messages, prepared.load_seconds);
         const std::optional<PhongMaterial> mtl = obj.material;
         prepared.scene = io::frame_mesh(std::move(obj.mesh), rows, columns);
         if (mtl) prepared.scene.material = *mtl;
@@ -173,7 +172,7 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         for (const std::string& warning : file.warnings) messages.warning(warning);
         const std::string mesh_override = mesh_path;
         if (mesh_path.empty()) mesh_path = file.mesh_path;
-        prepared.scene = scene_from_file(std::move(file), input, mesh_override, flags, messages);
+        prepared.scene = scene_from_file(std::move(file), input, mesh_override, flags, messages, prepared.load_seconds);
         prepared.name = fs::path(input).stem().string();
     }
     apply_flags(prepared, flags, messages);
@@ -190,7 +189,7 @@ PreparedScene prepare_parsed_scene(io::SceneFile file, const std::string& name, 
                                    const Messages& messages) {
     for (const std::string& warning : file.warnings) messages.warning(warning);
     PreparedScene prepared;
-    prepared.scene = scene_from_file(std::move(file), name, "", flags, messages);
+    prepared.scene = scene_from_file(std::move(file), name, "", flags, messages, prepared.load_seconds);
     prepared.name = name;
     apply_flags(prepared, flags, messages);
     return prepared;

@@ -16,6 +16,7 @@ struct PreparedScene {
     Scene scene;
     RenderOptions options;
     std::string name;  ///< stem for default output names ("default", "bunny")
+    double load_seconds = 0.0;  ///< reading and checking the mesh file
 };
 
 /// Finds assets/default.json: ./assets, then the source tree, then

@@ -156,7 +156,7 @@ void read_mesh_path(const SceneReader& reader, const json& document, const std::
     const json::json_pointer root;
     if (const json* mesh = reader.optional_field(document, root, "mesh")) {
         const std::string relative = reader.string(*mesh, root / "mesh");
-        if (relative.empty()) reader.fail(root / "mesh", "expected an OBJ file name, got an empty string");
+        if (relative.empty()) reader.fail(root / "mesh", "expected a mesh file name (.obj, .ply, .stl, .gltf, .glb), got an empty string");
         const std::filesystem::path mesh_path(relative);
         result.mesh_path = mesh_path.is_absolute() || folder.empty()
                                ? mesh_path.string()

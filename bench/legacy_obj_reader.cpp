@@ -1,16 +1,20 @@
-#include "obj_check.hpp"
+// The previous OBJ path, verbatim in what it does (see legacy_obj_reader.hpp):
+// the line check of the old obj_check.cpp, then tinyobjloader.
+#include "legacy_obj_reader.hpp"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string_view>
 #include <vector>
 
-#include "phongrast/io/error.hpp"
+#include "tiny_obj_loader_double.hpp"
 
-namespace phongrast::io {
+namespace phongrast_bench {
 namespace {
 
 struct Line {
@@ -51,7 +55,7 @@ public:
     explicit Checker(const std::string& path) : path_(path) {}
 
     [[noreturn]] void fail(std::size_t line, const std::string& what) const {
-        throw FileError(path_ + ":" + std::to_string(line) + ": " + what);
+        throw std::runtime_error(path_ + ":" + std::to_string(line) + ": " + what);
     }
 
     glm::dvec3 check_vertex(const Line& line, const std::vector<std::string>& words) const {
@@ -148,9 +152,53 @@ std::vector<glm::dvec3> check_obj_text(const std::string& text, const std::strin
         }
     }
     if (faces == 0) {
-        throw FileError(path + ": no faces ('f' lines); expected a mesh with at least one triangle");
+        throw std::runtime_error(path + ": no faces ('f' lines); expected a mesh with at least one triangle");
     }
     return positions;
 }
 
-}  // namespace phongrast::io
+
+phongrast::Mesh legacy_read_obj(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream contents;
+    contents << in.rdbuf();
+    const std::string text = contents.str();
+    std::vector<glm::dvec3> exact_positions = check_obj_text(text, path);
+
+    tinyobj::attrib_t attributes;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warnings;
+    std::string errors;
+    std::istringstream stream(text);
+    tinyobj::MaterialFileReader material_reader("./");
+    if (!tinyobj::LoadObj(&attributes, &shapes, &materials, &warnings, &errors, &stream, &material_reader,
+                          /*triangulate=*/false, /*default_vcols_fallback=*/true)) {
+        throw std::runtime_error(path + ": cannot parse OBJ: " + errors);
+    }
+    phongrast::Mesh mesh;
+    const std::size_t vertex_count = attributes.vertices.size() / 3;
+    mesh.positions = std::move(exact_positions);
+    if (attributes.colors.size() == attributes.vertices.size()) {
+        mesh.colors.reserve(vertex_count);
+        for (std::size_t i = 0; i < vertex_count; ++i) {
+            mesh.colors.emplace_back(static_cast<float>(attributes.colors[3 * i]),
+                                     static_cast<float>(attributes.colors[3 * i + 1]),
+                                     static_cast<float>(attributes.colors[3 * i + 2]));
+        }
+    }
+    for (const tinyobj::shape_t& shape : shapes) {
+        std::size_t corner = 0;
+        for (const unsigned char corners : shape.mesh.num_face_vertices) {
+            const auto vertex = [&](std::size_t k) {
+                return static_cast<std::uint32_t>(shape.mesh.indices[corner + k].vertex_index);
+            };
+            for (std::size_t k = 1; k + 1 < corners; ++k) mesh.triangles.push_back({vertex(0), vertex(k), vertex(k + 1)});
+            corner += corners;
+        }
+    }
+    phongrast::validate_mesh(mesh);
+    return mesh;
+}
+
+}  // namespace phongrast_bench
