@@ -18,15 +18,18 @@ seed="${FUZZ_SEED:-1}"
 seconds="${FUZZ_SECONDS:-600}"
 build=build/fuzz
 sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+# Coverage instrumentation in the library too (not only in the targets), so
+# libFuzzer sees which branches of the readers an input reaches.
+coverage="-fsanitize=fuzzer-no-link"
 
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$sanitizers" \
+  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$sanitizers $coverage" \
   -DPHONGRAST_BUILD_FUZZERS=ON -DPHONGRAST_BUILD_IO=ON -DPHONGRAST_BUILD_APPS=OFF \
   -DPHONGRAST_BUILD_TESTS=OFF -DPHONGRAST_INSTALL=OFF -DPHONGRAST_WERROR=ON
-cmake --build "$build" -j2 --target fuzz_obj fuzz_scene
+cmake --build "$build" -j2 --target fuzz_obj fuzz_ply fuzz_stl fuzz_gltf fuzz_scene
 
 mkdir -p "$build/findings"
-for target in fuzz_obj fuzz_scene; do
+for target in fuzz_obj fuzz_ply fuzz_stl fuzz_gltf fuzz_scene; do
   name="${target#fuzz_}"
   # New inputs go to a scratch corpus so the repository's seeds stay as they are.
   work="$build/corpus/$name"

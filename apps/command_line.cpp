@@ -7,10 +7,10 @@ namespace phongrast::cli {
 
 void add_scene_flags(CLI::App& command, SceneFlags& flags, const std::string& output_help) {
     command.add_option("input", flags.input,
-                       "Scene file (.json, ../shared/scene-format.md) or a mesh (.obj) to frame automatically. "
+                       "Scene file (.json, docs/scene-format.md) or a mesh (.obj, .ply, .stl, .gltf, .glb) to frame automatically. "
                        "Default: the project's default scene (assets/default.json)");
     command.add_option("-o,--output", flags.output, output_help);
-    command.add_option("--mesh", flags.mesh, "OBJ mesh to render instead of the scene's \"mesh\"");
+    command.add_option("--mesh", flags.mesh, "Mesh (OBJ, PLY, STL, glTF/GLB) to render instead of the scene's \"mesh\"");
     command.add_option("--shader", flags.shader, "flat, gouraud or phong (overrides the scene)");
     command.add_option("--lighting", flags.lighting,
                        "ambient, diffuse, specular, full, or several joined with '+' (overrides the scene)");

@@ -2,11 +2,14 @@
 #ifndef PHONGRAST_APPS_COMMAND_LINE_HPP
 #define PHONGRAST_APPS_COMMAND_LINE_HPP
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "phongrast/io/mesh_file.hpp"
 
 namespace phongrast::cli {
 
@@ -27,6 +30,9 @@ struct SceneFlags {
     std::string smooth = "index";  ///< which corners share a normal: "index" (the contract) or "position"
     double crease = 180.0;         ///< degrees; sharper edges keep separate normals
     bool quiet = false;
+    /// Reads a mesh file; empty: io::read_mesh. The batch command passes a
+    /// reader that keeps the last mesh, for jobs that share it.
+    std::function<io::MeshFile(const std::string& path)> read_mesh;
 };
 
 /// Adds the positional input, -o and every scene/override flag to `command`.

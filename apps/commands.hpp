@@ -1,4 +1,4 @@
-// The three subcommands. Each `add_*` registers its flags on the CLI11 app and
+// The subcommands. Each `add_*` registers its flags on the CLI11 app and
 // returns the state its `run_*` reads after parsing.
 #ifndef PHONGRAST_APPS_COMMANDS_HPP
 #define PHONGRAST_APPS_COMMANDS_HPP
@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "batch_manifest.hpp"
 #include "command_line.hpp"
 
 namespace phongrast::cli {
@@ -36,6 +37,22 @@ struct GenerateCommand {
 };
 void add_generate_command(CLI::App& app, GenerateCommand& command);
 int run_generate(const GenerateCommand& command);
+
+struct BatchCommand {
+    std::string manifest;
+    std::string output_folder;
+    std::string shard;  ///< "I/N"; empty: from the scheduler's variables
+    int shards = 0;     ///< with JOB_COMPLETION_INDEX; 0: not given
+    double job_timeout = 0.0;
+    bool force = false;
+    bool status = false;
+    bool quiet = false;
+    int threads = 0;
+    int samples = 0;      ///< 0: not given
+    JobSettings defaults;  ///< --shader, --lighting, --size, --mode
+};
+void add_batch_command(CLI::App& app, BatchCommand& command);
+int run_batch(const BatchCommand& command);
 
 }  // namespace phongrast::cli
 

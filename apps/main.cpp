@@ -14,19 +14,20 @@
 
 int main(int argc, char** argv) {
     using namespace phongrast::cli;
-    catch_interrupts();
     CLI::App app("phongrast " PHONGRAST_VERSION_STRING
                  ": a software renderer with Phong lighting and painter's order. "
-                 "Scene files follow ../shared/scene-format.md.",
+                 "Scene files follow docs/scene-format.md.",
                  "phongrast");
     app.set_version_flag("--version", "phongrast " PHONGRAST_VERSION_STRING);
     app.require_subcommand(1);
     RenderCommand render;
     SheetCommand sheet;
     GenerateCommand generate;
+    BatchCommand batch;
     add_render_command(app, render);
     add_sheet_command(app, sheet);
     add_generate_command(app, generate);
+    add_batch_command(app, batch);
 
     try {
         app.parse(argc, argv);
@@ -40,10 +41,14 @@ int main(int argc, char** argv) {
         return 2;
     }
 
+    // render and sheet stop cleanly on Ctrl-C; batch keeps the default (its
+    // supervisor and workers end, and a re-run resumes from the log).
+    if (app.got_subcommand("render") || app.got_subcommand("sheet")) catch_interrupts();
     try {
         if (app.got_subcommand("render")) return run_render(render);
         if (app.got_subcommand("sheet")) return run_sheet(sheet);
         if (app.got_subcommand("generate")) return run_generate(generate);
+        if (app.got_subcommand("batch")) return run_batch(batch);
     } catch (const phongrast::RenderCancelled&) {
         // Only Ctrl-C cancels here; every file is written by rename, so none is half-written.
         std::cerr << "\nphongrast: interrupted; no output written\n";

@@ -67,6 +67,7 @@ int run_render(const RenderCommand& command) {
 
     using Clock = std::chrono::steady_clock;
     Timing timing;
+    timing.load_seconds = prepared.load_seconds;
     const int runs = command.repeat > 0 ? command.repeat : 1;
     timing.warm_up = command.repeat > 0;
     // One Renderer for the warm-up and every timed run: after the first
@@ -97,7 +98,7 @@ int run_render(const RenderCommand& command) {
     } else {
         io::write_image(result.image, output);
     }
-    messages.result(summary_line(result.stats, timing.seconds.back()));
+    messages.result(summary_line(result.stats, timing.seconds.back(), prepared.load_seconds));
     if (command.repeat > 0) {
         messages.result("render time over " + std::to_string(runs) + " runs after 1 warm-up: median " +
                         milliseconds(timing.median()) + ", min " + milliseconds(timing.min()) + ", max " +

@@ -33,11 +33,13 @@ void Messages::progress_done() const {
     std::cerr << "\r\033[K" << std::flush;
 }
 
-std::string summary_line(const RenderStats& stats, double seconds) {
-    char buffer[512];
+std::string summary_line(const RenderStats& stats, double seconds, double load_seconds) {
+    char load[64] = "";
+    if (load_seconds >= 0.0) std::snprintf(load, sizeof load, "load %.2f ms, ", load_seconds * 1e3);
+    char buffer[576];
     std::snprintf(buffer, sizeof buffer,
                   "%llu triangles in, %llu drawn, %llu dropped, %llu clipped, %llu culled, %llu outside the view, "
-                  "%llu between samples, %llu degenerate; %llu samples covered, %llu shaded; render %.2f ms",
+                  "%llu between samples, %llu degenerate; %llu samples covered, %llu shaded; %srender %.2f ms",
                   static_cast<unsigned long long>(stats.triangles_in),
                   static_cast<unsigned long long>(stats.triangles_drawn),
                   static_cast<unsigned long long>(stats.triangles_dropped),
@@ -47,7 +49,7 @@ std::string summary_line(const RenderStats& stats, double seconds) {
                   static_cast<unsigned long long>(stats.triangles_between_samples),
                   static_cast<unsigned long long>(stats.triangles_degenerate),
                   static_cast<unsigned long long>(stats.samples_covered),
-                  static_cast<unsigned long long>(stats.samples_shaded), seconds * 1e3);
+                  static_cast<unsigned long long>(stats.samples_shaded), load, seconds * 1e3);
     return buffer;
 }
 
@@ -68,6 +70,7 @@ std::string stats_json(const Timing& timing, const RenderStats& stats, const Sce
     document["render_seconds"] = {
         {"median", timing.median()}, {"min", timing.min()}, {"max", timing.max()},
         {"runs", timing.seconds},    {"warm_up", timing.warm_up}};
+    if (timing.load_seconds >= 0.0) document["load_seconds"] = timing.load_seconds;
     document["scene"] = {{"triangles", scene.mesh.triangles.size()},
                          {"vertices", scene.mesh.positions.size()},
                          {"height", scene.image.rows},
@@ -82,24 +85,11 @@ std::string stats_json(const Timing& timing, const RenderStats& stats, const Sce
                                                                                     : "auto"},
                          {"threads", options.threads},
                          {"samples_per_axis", options.samples_per_axis}};
-    document["stats"] = {{"triangles_in", stats.triangles_in},
-                         {"triangles_culled", stats.triangles_culled},
-                         {"triangles_degenerate", stats.triangles_degenerate},
-                         {"triangles_dropped", stats.triangles_dropped},
-                         {"triangles_clipped", stats.triangles_clipped},
-                         {"triangles_outside", stats.triangles_outside},
-                         {"triangles_between_samples", stats.triangles_between_samples},
-                         {"triangles_drawn", stats.triangles_drawn},
-                         {"samples_covered", stats.samples_covered},
-                         {"samples_shaded", stats.samples_shaded},
-                         {"nonfinite_values_replaced", stats.nonfinite_values_replaced},
-                         {"ambient_evaluations", stats.ambient_evaluations},
-                         {"diffuse_evaluations", stats.diffuse_evaluations},
-                         {"specular_evaluations", stats.specular_evaluations},
-                         {"normal_interpolations", stats.normal_interpolations},
-                         {"effects", to_string(stats.effects)},
-                         {"back_faces_culled", stats.back_faces_culled},
-                         {"seconds", stats.seconds}};
+    nlohmann::ordered_json& counts = document["stats"];
+    for (const RenderCounter& counter : render_counters()) counts[counter.name] = stats.*counter.field;
+    counts["effects"] = to_string(stats.effects);
+    counts["back_faces_culled"] = stats.back_faces_culled;
+    counts["seconds"] = stats.seconds;
     return document.dump(2) + "\n";
 }
 

@@ -29,12 +29,14 @@ private:
     bool terminal_;
 };
 
-/// "12288 triangles in, 6020 drawn, 0 dropped, 12 clipped, 6268 culled, ... 41.3 ms".
-std::string summary_line(const RenderStats& stats, double seconds);
+/// "12288 triangles in, 6020 drawn, 0 dropped, 12 clipped, 6268 culled, ... render 41.3 ms";
+/// with `load_seconds` >= 0, "...; load 812.40 ms, render 41.30 ms".
+std::string summary_line(const RenderStats& stats, double seconds, double load_seconds = -1.0);
 
 struct Timing {
     std::vector<double> seconds;  ///< one per timed run, in order
     bool warm_up = false;
+    double load_seconds = -1.0;  ///< reading the mesh file; < 0: not measured
     double median() const;
     double min() const;
     double max() const;

@@ -1,5 +1,6 @@
 #include "scene_setup.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <sstream>
 
@@ -7,7 +8,7 @@
 #include "phongrast/io/auto_scene.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
-#include "phongrast/io/obj_file.hpp"
+#include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/scene_file.hpp"
 #include "phongrast/smooth_normals.hpp"
 
@@ -16,16 +17,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool is_obj(const std::string& path) {
-    std::string extension = fs::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".obj";
-}
-
-io::ObjFile load_mesh(const std::string& path, const Messages& messages) {
-    io::ObjFile obj = io::read_obj(path);
-    for (const std::string& warning : obj.warnings) messages.warning(warning);
-    return obj;
+/// Reads a mesh in any supported format (through the batch command's cache
+/// when it passes one); `seconds` is the time it took.
+io::MeshFile load_mesh(const std::string& path, const SceneFlags& flags, const Messages& messages, double& seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    io::MeshFile mesh = flags.read_mesh ? flags.read_mesh(path) : io::read_mesh(path);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (const std::string& warning : mesh.warnings) messages.warning(warning);
+    return mesh;
 }
 
 std::string describe(const PhongMaterial& m) {
@@ -70,68 +69,53 @@ std::string choose_output(const std::string& output, const std::string& default_
     return path;
 }
 
-PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
-    PreparedScene prepared;
-    std::string input = flags.input;
-    std::string mesh_path = flags.mesh;
-    if (input.empty() && mesh_path.empty()) {
-        input = find_default_scene();
-        messages.note("rendering the default scene " + input);
-    }
-    if (!input.empty() && is_obj(input)) {
-        if (!mesh_path.empty()) {
-            throw std::invalid_argument("--mesh: give either a mesh as the input or --mesh, not both");
-        }
-        mesh_path = input;
-        input.clear();
-    }
+namespace {
 
-    int rows = 512;
-    int columns = 512;
-    if (!flags.size.empty()) std::tie(columns, rows) = parse_size(flags.size);
+/// The scene branch of prepare_scene: the parsed file with its mesh loaded
+/// and its material resolved (scene, then MTL, then defaults).
+Scene scene_from_file(io::SceneFile file, const std::string& input, const std::string& mesh_override,
+                      const SceneFlags& flags, const Messages& messages, double& load_seconds) {
+    if (!mesh_override.empty()) {
+        file.mesh_path = mesh_override;
+    } else if (file.mesh_path.empty()) {
+        throw io::FileError(input + ": /mesh: missing required field; expected a mesh file name (.obj, .ply, .stl, .gltf, .glb; or give --mesh)");
+    }
+    std::error_code error;
+    if (mesh_override.empty() && !fs::exists(file.mesh_path, error)) {
+        // Name the scene field too: the path was resolved against the scene's folder.
+        throw io::FileError(input + ": /mesh: " + file.mesh_path +
+                            ": mesh not found (no such file; a relative \"mesh\" is relative to the scene file)");
+    }
+    io::MeshFile obj = load_mesh(file.mesh_path, flags, messages, load_seconds);
+    Scene scene = std::move(file.scene);
+    scene.mesh = std::move(obj.mesh);
+    std::vector<std::string> defaults_used;
+    scene.material = io::resolve_material(file.material, obj.material, &defaults_used);
+    if (!defaults_used.empty()) {
+        std::string names;
+        for (const std::string& name : defaults_used) names += (names.empty() ? "" : ", ") + name;
+        messages.note("no " + names + " in " + input + (obj.material ? " or the mesh's MTL" : " (and the mesh has no MTL)") +
+                      "; using the defaults, material: " + describe(scene.material));
+    }
+    if (!flags.size.empty()) {
+        const auto [columns, rows] = parse_size(flags.size);
+        scene.image.rows = rows;
+        scene.image.columns = columns;
+    }
+    return scene;
+}
 
+/// --smooth and --crease.
+NormalOptions normal_options(const SceneFlags& flags) {
+    NormalOptions options;
+    options.sharing = flags.smooth == "position" ? NormalSharing::position : NormalSharing::vertex_index;
+    options.crease_degrees = flags.crease;
+    return options;
+}
+
+/// Shader, lighting and camera overrides, the camera check, and the options.
+void apply_flags(PreparedScene& prepared, const SceneFlags& flags, const Messages& messages) {
     Scene& scene = prepared.scene;
-    bool auto_framed = false;
-    if (input.empty()) {
-        // Only a mesh: frame it and tell the user what was chosen.
-        io::ObjFile obj = load_mesh(mesh_path, messages);
-        const std::optional<PhongMaterial> mtl = obj.material;
-        scene = io::frame_mesh(std::move(obj.mesh), rows, columns);
-        if (mtl) scene.material = *mtl;
-        prepared.name = fs::path(mesh_path).stem().string();
-        auto_framed = true;
-    } else {
-        io::SceneFile file = io::read_scene_file(input);
-        for (const std::string& warning : file.warnings) messages.warning(warning);
-        if (!mesh_path.empty()) {
-            file.mesh_path = mesh_path;
-        } else if (file.mesh_path.empty()) {
-            throw io::FileError(input + ": /mesh: missing required field; expected an OBJ file name (or give --mesh)");
-        }
-        std::error_code error;
-        if (mesh_path.empty() && !fs::exists(file.mesh_path, error)) {
-            // Name the scene field too: the path was resolved against the scene's folder.
-            throw io::FileError(input + ": /mesh: " + file.mesh_path +
-                                ": mesh not found (no such file; a relative \"mesh\" is relative to the scene file)");
-        }
-        io::ObjFile obj = load_mesh(file.mesh_path, messages);
-        scene = std::move(file.scene);
-        scene.mesh = std::move(obj.mesh);
-        std::vector<std::string> defaults_used;
-        scene.material = io::resolve_material(file.material, obj.material, &defaults_used);
-        if (!defaults_used.empty()) {
-            std::string names;
-            for (const std::string& name : defaults_used) names += (names.empty() ? "" : ", ") + name;
-            messages.note("no " + names + " in " + input + (obj.material ? " or the mesh's MTL" : " (and the mesh has no MTL)") +
-                          "; using the defaults, material: " + describe(scene.material));
-        }
-        if (!flags.size.empty()) {
-            scene.image.rows = rows;
-            scene.image.columns = columns;
-        }
-        mesh_path = file.mesh_path;
-        prepared.name = fs::path(input).stem().string();
-    }
     if (scene.lights.empty() && scene.lighting != Lighting::only_ambient()) {
         messages.warning("the scene has no lights: only the ambient term will show");
     }
@@ -146,10 +130,8 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         scene.camera.sensor_height = flags.sensor[0];
         scene.camera.sensor_width = flags.sensor[1];
     }
-    NormalOptions normal_options;
-    normal_options.sharing = flags.smooth == "position" ? NormalSharing::position : NormalSharing::vertex_index;
-    normal_options.crease_degrees = flags.crease;
-    if (!normal_options.is_contract()) scene.mesh = with_normals(scene.mesh, normal_options);
+    const NormalOptions normals = normal_options(flags);
+    if (!normals.is_contract()) scene.mesh = with_normals(scene.mesh, normals);
     try {
         make_camera_frame(scene.camera, scene.image.rows, scene.image.columns);
     } catch (const std::invalid_argument& error) {
@@ -163,14 +145,66 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
                                 : flags.overdraw == "all"   ? Overdraw::shade_all
                                                             : Overdraw::automatic;
     prepared.options.samples_per_axis = flags.samples;
+}
+
+}  // namespace
+
+PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
+    PreparedScene prepared;
+    std::string input = flags.input;
+    std::string mesh_path = flags.mesh;
+    if (input.empty() && mesh_path.empty()) {
+        input = find_default_scene();
+        messages.note("rendering the default scene " + input);
+    }
+    if (!input.empty() && io::has_mesh_extension(input)) {
+        if (!mesh_path.empty()) {
+            throw std::invalid_argument("--mesh: give either a mesh as the input or --mesh, not both");
+        }
+        mesh_path = input;
+        input.clear();
+    }
+
+    bool auto_framed = false;
+    if (input.empty()) {
+        // Only a mesh: frame it and tell the user what was chosen.
+        int rows = 512;
+        int columns = 512;
+        if (!flags.size.empty()) std::tie(columns, rows) = parse_size(flags.size);
+        io::MeshFile obj = load_mesh(mesh_path, flags, messages, prepared.load_seconds);
+        const std::optional<PhongMaterial> mtl = obj.material;
+        prepared.scene = io::frame_mesh(std::move(obj.mesh), rows, columns);
+        if (mtl) prepared.scene.material = *mtl;
+        prepared.name = fs::path(mesh_path).stem().string();
+        auto_framed = true;
+    } else {
+        if (!flags.size.empty()) parse_size(flags.size);  // a bad --size is reported before the files
+        io::SceneFile file = io::read_scene_file(input);
+        for (const std::string& warning : file.warnings) messages.warning(warning);
+        const std::string mesh_override = mesh_path;
+        if (mesh_path.empty()) mesh_path = file.mesh_path;
+        prepared.scene = scene_from_file(std::move(file), input, mesh_override, flags, messages, prepared.load_seconds);
+        prepared.name = fs::path(input).stem().string();
+    }
+    apply_flags(prepared, flags, messages);
 
     if (auto_framed && !messages.quiet()) {
         std::ostringstream normal_flags;
-        if (!normal_options.is_contract()) normal_flags << " with --smooth " << flags.smooth << " --crease " << flags.crease;
+        if (!normal_options(flags).is_contract()) normal_flags << " with --smooth " << flags.smooth << " --crease " << flags.crease;
         messages.note("no scene file: framed " + mesh_path + " automatically. This scene file reproduces the picture" +
                       normal_flags.str() + ":\n" +
-                      io::scene_to_json(scene, fs::absolute(mesh_path).lexically_normal().string()));
+                      io::scene_to_json(prepared.scene, fs::absolute(mesh_path).lexically_normal().string()));
     }
+    return prepared;
+}
+
+PreparedScene prepare_parsed_scene(io::SceneFile file, const std::string& name, const SceneFlags& flags,
+                                   const Messages& messages) {
+    for (const std::string& warning : file.warnings) messages.warning(warning);
+    PreparedScene prepared;
+    prepared.scene = scene_from_file(std::move(file), name, "", flags, messages, prepared.load_seconds);
+    prepared.name = name;
+    apply_flags(prepared, flags, messages);
     return prepared;
 }
 

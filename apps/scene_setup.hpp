@@ -6,6 +6,7 @@
 #include <string>
 
 #include "command_line.hpp"
+#include "phongrast/io/scene_file.hpp"
 #include "phongrast/render.hpp"
 #include "report.hpp"
 
@@ -15,6 +16,7 @@ struct PreparedScene {
     Scene scene;
     RenderOptions options;
     std::string name;  ///< stem for default output names ("default", "bunny")
+    double load_seconds = 0.0;  ///< reading and checking the mesh file
 };
 
 /// Finds assets/default.json: ./assets, then the source tree, then
@@ -26,6 +28,12 @@ std::string find_default_scene();
 /// automatically framed mesh) go through `messages`. Throws io::FileError or
 /// std::invalid_argument for bad input.
 PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages);
+
+/// prepare_scene for a scene already parsed (a batch manifest's inline scene):
+/// loads its mesh and applies `flags` (its input and mesh are not used).
+/// `name` stands for the file in messages and is the PreparedScene's name.
+PreparedScene prepare_parsed_scene(io::SceneFile file, const std::string& name, const SceneFlags& flags,
+                                   const Messages& messages);
 
 /// `output` if given, else NAME + suffix in the current folder. Checks the
 /// extension and that the folder exists, before anything is rendered.

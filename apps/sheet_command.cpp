@@ -70,15 +70,7 @@ int run_sheet(const SheetCommand& command) {
         prepared.scene.shader = figure.shader;
         prepared.scene.lighting = figure.lighting;
         RenderResult result = render(prepared.scene, prepared.options);
-        total.triangles_in += result.stats.triangles_in;
-        total.triangles_drawn += result.stats.triangles_drawn;
-        total.triangles_dropped += result.stats.triangles_dropped;
-        total.triangles_clipped += result.stats.triangles_clipped;
-        total.triangles_culled += result.stats.triangles_culled;
-        total.triangles_outside += result.stats.triangles_outside;
-        total.triangles_between_samples += result.stats.triangles_between_samples;
-        total.triangles_degenerate += result.stats.triangles_degenerate;
-        total.seconds += result.stats.seconds;
+        total += result.stats;
         cells.push_back({std::move(result.image), figure.label});
     }
     messages.progress_done();

@@ -1,10 +1,10 @@
-// Issue 6 benchmark: what each effect set costs, specialised kernel against
+// bench_effects: what each effect set costs, specialised kernel against
 // the general one (RenderOptions::specialize_effects = false, the baseline,
 // measured in the same process), Gouraud and Phong, 0 to 8 lights, and
 // back-face culling on closed meshes, with 1 and 2 render threads.
 //
 // Every benchmark is named key=value/key=value/... so that
-// bench/effects_table.py can turn the JSON output into docs tables:
+// bench/report.py effects can turn the JSON output into docs tables:
 //   effects/mesh=icosphere/shader=phong/effect=full/lights=2/dark=0/kernel=special/cull=off/threads=1
 // Times are wall-clock (the render runs on a oneTBB arena of `threads` workers).
 #include <cstdio>
@@ -17,6 +17,7 @@
 #include "bench_meshes.hpp"
 #include "bench_scenes.hpp"
 #include "phongrast/render.hpp"
+#include "support/scenes.hpp"
 
 namespace {
 
@@ -51,8 +52,8 @@ std::set<std::string> g_registered;
 phongrast::Scene make_scene(const Case& c) {
     phongrast::Scene scene = with_effect(c.mesh->scene, c.effect);
     scene.shader = c.shader;
-    if (c.lights != kSceneLights) scene.lights = lights_around(scene, c.lights);
-    const std::vector<phongrast::PointLight> extra = lights_around(scene, c.dark_lights);
+    if (c.lights != kSceneLights) scene.lights = phongrast::support::lights_around(scene, c.lights);
+    const std::vector<phongrast::PointLight> extra = phongrast::support::lights_around(scene, c.dark_lights);
     for (phongrast::PointLight dark : extra) {
         dark.intensity = glm::vec3(0.0f);
         scene.lights.push_back(dark);

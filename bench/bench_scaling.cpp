@@ -1,18 +1,18 @@
-// Issue 8: how phongrast's render time grows with the triangle count and with
+// bench_scaling: how phongrast's render time grows with the triangle count and with
 // the image size, Gouraud and Phong, 1 and 2 threads (RenderOptions::exact()).
 //
 // Two sweeps over the llvmpipe comparison's dented, coloured icosphere
-// (bench/llvmpipe/scenes.cpp, three lights):
+// (tests/support/scenes.cpp, three lights):
 //   * triangles: 20 f^2 triangles for f = 7 .. 447 (980 .. 3,996,180) at 1024 x 1024;
 //   * pixels:    the 15,680-triangle sphere at 256^2 .. 4096^2;
 // and two more at one size each:
 //   * lighting:  the 15,680-triangle sphere at 1024^2, flat/Gouraud/Phong x
 //                ambient, diffuse, specular and full lighting;
-//   * meshes:    each mesh of ../shared/assets at 512^2 (with the cameras of
-//                its README), Gouraud and Phong; skipped, saying so, when the
-//                folder is absent.
+//   * meshes:    each mesh of ../shared/assets at 512^2, framed by io::frame_mesh
+//                along the view its README suggests, Gouraud and Phong; skipped,
+//                saying so, when the folder is absent.
 // Each benchmark reports the counters `triangles` and `samples` (samples shaded)
-// so bench/scaling_slopes.py can fit time against both on log-log axes.
+// so bench/report.py scaling can fit time against both on log-log axes.
 //
 // Usage: bench_scaling [--quick] [Google Benchmark flags]
 //   --quick: the triangle and pixel sweeps up to 256k triangles and 2048^2 (the lighting
@@ -26,19 +26,21 @@
 #include <utility>
 #include <vector>
 
-#include "asset_scenes.hpp"
+#include <cstdio>
+
 #include "phongrast/render.hpp"
-#include "scenes.hpp"
+#include "support/scenes.hpp"
+#include "support/shared_scenes.hpp"
 
 namespace {
 
 /// Scenes are generated once per (frequency, rows) and kept for every benchmark that uses them.
 const phongrast::Scene& cached_scene(int frequency, int rows) {
-    static std::map<std::pair<int, int>, std::unique_ptr<llvmpipe_compare::NamedScene>> cache;
+    static std::map<std::pair<int, int>, std::unique_ptr<phongrast::support::NamedScene>> cache;
     auto& slot = cache[{frequency, rows}];
     if (!slot) {
-        slot = std::make_unique<llvmpipe_compare::NamedScene>(
-            llvmpipe_compare::icosphere_scene("icosphere", frequency, rows));
+        slot = std::make_unique<phongrast::support::NamedScene>(
+            phongrast::support::icosphere_scene("icosphere", frequency, rows));
     }
     return slot->scene;
 }
@@ -115,7 +117,8 @@ int main(int argc, char** argv) {
             }
         }
     }
-    for (llvmpipe_compare::NamedScene& named : llvmpipe_compare::asset_scenes(512)) {
+    std::vector<std::string> notes;
+    for (phongrast::support::NamedScene& named : phongrast::support::comparison_scenes(512, notes)) {
         for (phongrast::Shader shader : {phongrast::Shader::gouraud, phongrast::Shader::phong}) {
             for (int threads : {1, 2}) {
                 named.scene.shader = shader;
@@ -126,6 +129,7 @@ int main(int argc, char** argv) {
             }
         }
     }
+    for (const std::string& note : notes) std::fprintf(stderr, "bench_scaling: %s\n", note.c_str());
     int count = static_cast<int>(arguments.size());
     benchmark::Initialize(&count, arguments.data());
     if (benchmark::ReportUnrecognizedArguments(count, arguments.data())) return 1;

@@ -1,6 +1,5 @@
-// Scenes for the effect-set benchmarks (issue 6): meshes generated in code,
-// a camera that frames any mesh, deterministic lights, and the effect-set
-// variants the benchmark sweeps.
+// Scenes for the effect-set benchmarks: the look every measured mesh gets, and
+// the effect-set variants the benchmark sweeps.
 #ifndef PHONGRAST_BENCH_BENCH_SCENES_HPP
 #define PHONGRAST_BENCH_BENCH_SCENES_HPP
 
@@ -8,29 +7,16 @@
 #include <vector>
 
 #include "phongrast/render.hpp"
+#include "support/shared_scenes.hpp"
 
 namespace phongrast_bench {
 
-/// Icosahedron subdivided `levels` times and pushed onto the unit sphere:
-/// 20 * 4^levels triangles, closed, counter-clockwise seen from outside,
-/// with a smoothly varying colour per vertex (so colours must be interpolated).
-phongrast::Mesh icosphere(int levels);
-
-/// Torus around the y axis, closed and outward: seen from above at an angle,
-/// painter's order draws some of its inner back faces over front faces.
-phongrast::Mesh torus(int rings, int sides, double major, double minor);
-
-/// Where the eye sits relative to the mesh's bounding box centre.
-enum class ViewAxis { plus_z, minus_z };
-
-/// A scene showing the whole mesh in a rows x columns image: lookat at the
-/// bounding-box centre, eye 2.5 box diagonals away along `axis` (the recipe
-/// of ../shared/assets/README.md), slightly raised, +y up.
-phongrast::Scene framed_scene(phongrast::Mesh mesh, int rows, int columns, ViewAxis axis = ViewAxis::plus_z);
-
-/// `count` white-ish lights spread around the view direction at two box
-/// diagonals from the centre, all with non-zero intensity, always the same.
-std::vector<phongrast::PointLight> lights_around(const phongrast::Scene& scene, int count);
+/// The effect benchmark's look for any mesh: framed by support::framed_scene
+/// (io::frame_mesh) at rows x columns, a dark background, ambient 0.2, the
+/// contract's example material with n = 16 (a visible highlight; pow() costs
+/// the same for any n), two lights around the view, Phong, full lighting.
+phongrast::Scene effect_scene(phongrast::Mesh mesh, int rows, int columns,
+                              phongrast::support::ViewAxis axis = phongrast::support::ViewAxis::plus_z);
 
 /// One column of the effect table: a lighting selection plus which material
 /// coefficients are zeroed.

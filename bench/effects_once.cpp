@@ -1,5 +1,5 @@
 // Renders one effect-benchmark case once, on one thread, for instruction
-// counting under valgrind --tool=callgrind (bench/callgrind_effects.py).
+// counting under valgrind --tool=callgrind (bench/report.py callgrind).
 // Instruction counts do not depend on what else the machine is doing, so they
 // back up the wall-clock tables of bench_effects on a shared machine.
 #include <cstdio>
@@ -10,6 +10,8 @@
 
 #include "bench_scenes.hpp"
 #include "phongrast/render.hpp"
+#include "support/meshes.hpp"
+#include "support/scenes.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"Render one bench_effects case once (icosphere, 512 x 512, RenderOptions::exact(), 1 thread)"};
@@ -17,7 +19,7 @@ int main(int argc, char** argv) {
     std::string shader = "phong", lighting = "full";
     int lights = 2, dark_lights = 0;
     bool general = false, cull = false;
-    app.add_option("--levels", levels, "icosphere subdivisions: 3 = 1,280 triangles, 6 = 81,920")->check(CLI::Range(0, 7));
+    app.add_option("--levels", levels, "icosphere of 20 x 4^levels triangles: 3 = 1,280, 6 = 81,920")->check(CLI::Range(0, 7));
     app.add_option("--shader", shader, "flat, gouraud or phong");
     app.add_option("--lighting", lighting, "ambient, diffuse, specular, full or a '+' list");
     app.add_option("--lights", lights, "lights of non-zero intensity")->check(CLI::Range(0, 64));
@@ -26,11 +28,11 @@ int main(int argc, char** argv) {
     app.add_flag("--cull", cull, "BackFaces::cull_when_hidden");
     CLI11_PARSE(app, argc, argv);
     try {
-        phongrast::Scene scene = phongrast_bench::framed_scene(phongrast_bench::icosphere(levels), 512, 512);
+        phongrast::Scene scene = phongrast_bench::effect_scene(phongrast::support::icosphere(1 << levels), 512, 512);
         scene.shader = phongrast::parse_shader(shader);
         scene.lighting = phongrast::parse_lighting(lighting);
-        scene.lights = phongrast_bench::lights_around(scene, lights);
-        for (phongrast::PointLight dark : phongrast_bench::lights_around(scene, dark_lights)) {
+        scene.lights = phongrast::support::lights_around(scene, lights);
+        for (phongrast::PointLight dark : phongrast::support::lights_around(scene, dark_lights)) {
             dark.intensity = glm::vec3(0.0f);
             scene.lights.push_back(dark);
         }

@@ -1,4 +1,5 @@
-// Shared by the fuzz targets: a scratch file writer and a small, bounded render.
+// Shared by the fuzz targets: a scratch file writer, a small, bounded render,
+// and the loop body of the mesh-reader targets.
 #ifndef PHONGRAST_FUZZ_COMMON_HPP
 #define PHONGRAST_FUZZ_COMMON_HPP
 
@@ -9,6 +10,11 @@
 #include <cstdlib>
 #include <string>
 
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include "phongrast/io/error.hpp"
 #include "phongrast/render.hpp"
 
 namespace phongrast_fuzz {
@@ -51,6 +57,24 @@ inline void render_small(const phongrast::Mesh& mesh, const phongrast::Scene* gi
         }
         if (result.stats.nonfinite_values_replaced != 0) std::abort();
     }
+}
+
+/// One input to a mesh reader that takes a path: written to a scratch file
+/// (one per fuzzing process, ending in `extension`), read, and rendered small.
+/// A clear error (FileError, or std::invalid_argument from validation) is the
+/// expected answer to bad input; anything else -- a crash, a sanitizer report,
+/// another exception type, a non-finite pixel -- is a finding.
+template <class Reader>
+int fuzz_mesh_reader(const std::uint8_t* data, std::size_t size, const char* extension, Reader read) {
+    static const std::string path =
+        "/tmp/phongrast_fuzz_" + std::to_string(getpid()) + "_" + std::string(extension + 1) + std::string(extension);
+    if (!write_file(path, data, size)) return 0;
+    try {
+        render_small(read(path).mesh);
+    } catch (const phongrast::io::FileError&) {
+    } catch (const std::invalid_argument&) {
+    }
+    return 0;
 }
 
 }  // namespace phongrast_fuzz

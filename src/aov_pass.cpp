@@ -103,13 +103,15 @@ void AovSamples::reset(int rows_, int columns_, const AovRequest& planes) {
 template <typename Real>
 void run_aov_pass(const AovPassInput<Real>& in, const AovRequest& planes, AovSamples& out,
                   ProgressMonitor& progress) {
-    progress.begin_stage(0.9, 1.0, static_cast<std::size_t>(in.bands));
-    tbb::parallel_for(0, in.bands, [&](int band) {
+    const Bins<Real>& bins = *in.bins;
+    progress.begin_stage(0.9, 1.0, static_cast<std::size_t>(bins.bands));
+    tbb::parallel_for(0, bins.bands, [&](int band) {
         if (progress.cancelled()) return;
-        const int row_begin = band * in.band_rows;
-        const int row_end = std::min(out.rows, row_begin + in.band_rows);
-        for (std::uint32_t i = in.band_start[band]; i < in.band_start[band + 1]; ++i) {
-            const DrawTriangle<Real>& draw = *in.binned[i];
+        const int row_begin = band * kBandRows;
+        const int row_end = std::min(out.rows, row_begin + kBandRows);
+        const DrawTriangle<Real>* const* draws = bins.band_draws(band);
+        for (std::uint32_t i = 0; i < bins.band_size(band); ++i) {
+            const DrawTriangle<Real>& draw = *draws[i];
             if (in.perspective) {
                 write_triangle<Real, true>(in, planes, draw, draw.source, row_begin, row_end, out);
             } else {

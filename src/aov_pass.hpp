@@ -11,6 +11,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "binning.hpp"
 #include "fill_types.hpp"
 #include "phongrast/aov.hpp"
 #include "phongrast/camera.hpp"
@@ -35,10 +36,7 @@ struct AovSamples {
 /// What the pass reads of the frame the colour fill just drew.
 template <typename Real>
 struct AovPassInput {
-    const DrawTriangle<Real>* const* binned = nullptr;  ///< band after band, painter's order within each
-    const std::uint32_t* band_start = nullptr;          ///< band b's draws: binned[band_start[b] .. band_start[b+1])
-    int bands = 0;
-    int band_rows = 0;
+    const Bins<Real>* bins = nullptr;  ///< the colour fill's bins: painter's order within each band
     Shader shader = Shader::phong;
     bool perspective = true;              ///< the shading's weights are perspective-correct
     const Real* depth_buffer = nullptr;   ///< the colour fill's final depths with Visibility::depth_buffer, else null

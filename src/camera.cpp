@@ -6,22 +6,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "validation.hpp"
+
 namespace phongrast {
-namespace {
-
-bool is_finite(const glm::dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-void require_positive_finite(double value, const char* field) {
-    if (!(value > 0.0) || !std::isfinite(value)) {
-        throw std::invalid_argument(std::string("camera.") + field +
-                                    ": expected a positive finite number, got " +
-                                    std::to_string(value));
-    }
-}
-
-}  // namespace
 
 glm::dvec3 CameraFrame::camera_from_world_direction(const glm::dvec3& direction_world) const {
     return {glm::dot(right, direction_world), glm::dot(up, direction_world),
@@ -53,12 +40,7 @@ ProjectedPoint CameraFrame::project(const glm::dvec3& point_world) const {
 }
 
 CameraFrame make_camera_frame(const Camera& camera, int rows, int columns) {
-    if (!is_finite(camera.eye)) throw std::invalid_argument("camera.eye: expected finite numbers");
-    if (!is_finite(camera.lookat)) throw std::invalid_argument("camera.lookat: expected finite numbers");
-    if (!is_finite(camera.up)) throw std::invalid_argument("camera.up: expected finite numbers");
-    require_positive_finite(camera.focal, "focal");
-    require_positive_finite(camera.sensor_height, "sensor[0] (height)");
-    require_positive_finite(camera.sensor_width, "sensor[1] (width)");
+    detail::validate_camera(camera);
     if (rows < 1) throw std::invalid_argument("image.height: expected at least 1 row");
     if (columns < 1) throw std::invalid_argument("image.width: expected at least 1 column");
 

@@ -12,6 +12,7 @@
 #include <cstddef>
 
 #include "phongrast/lighting.hpp"
+#include "view.hpp"
 
 namespace phongrast::detail {
 
@@ -33,8 +34,8 @@ Varyings<Real> lerp(const Varyings<Real>& a, const Varyings<Real>& b, Real t) {
 template <typename Real>
 struct ClipVertex {
     Varyings<Real> varyings;
-    double depth = 0.0;   ///< z_c
-    double column = 0.0;  ///< valid once projected
+    double depth = 0.0;   ///< z_c (camera space)
+    double column = 0.0;  ///< sample coordinates, valid once projected
     double row = 0.0;
 };
 
@@ -69,6 +70,24 @@ void clip_against(const ClipPolygon<Real>& in, ClipPolygon<Real>& out, Distance&
         }
     }
 }
+
+/// Projected coordinates up to this size are clipped exactly (differences of
+/// two of them stay finite); beyond it only overflow can have produced them.
+constexpr double kMaxClippableProjection = 1e306;
+
+/// Clips `polygon` to the near plane, then to the guard band around the
+/// image (raster.hpp's kGuardBandPixels). Attributes are interpolated in
+/// screen space, or at the matching 3D parameter when `perspective`.
+/// Returns false when nothing is left, or when a corner cannot be
+/// represented (a coordinate overflowed on the way here): the triangle is
+/// then skipped rather than fed to the fixed-point snapping.
+template <typename Real>
+bool clip_to_view(ClipPolygon<Real>& polygon, const View& view, bool perspective);
+
+/// Whether a convex polygon (sample coordinates) overlaps the image
+/// rectangle [0, columns] x [0, rows].
+template <typename Real>
+bool meets_image(const ClipPolygon<Real>& polygon, int rows, int columns);
 
 }  // namespace phongrast::detail
 

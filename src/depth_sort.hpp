@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -52,96 +53,113 @@ struct DepthSortScratch {
     std::vector<depth_sort::Counts> block_counts;
 };
 
+namespace depth_sort {
+
+inline std::pair<std::size_t, std::size_t> block_range(std::size_t n, std::size_t block) {
+    return {block * kBlock, std::min(n, (block + 1) * kBlock)};
+}
+
+/// Small inputs: insertion sort, stable, and (unlike std::stable_sort) no temporary buffer.
+inline void insertion_order(const std::vector<double>& depth, std::vector<std::uint32_t>& order) {
+    for (std::size_t i = 0; i < depth.size(); ++i) {
+        std::size_t j = i;
+        for (; j > 0 && depth[order[j - 1]] < depth[i]; --j) order[j] = order[j - 1];
+        order[j] = static_cast<std::uint32_t>(i);
+    }
+}
+
+/// The first pass over the depths: the keys, the identity order, and every
+/// pass's digit counts per block.
+inline void make_keys(const std::vector<double>& depth, std::size_t blocks, std::vector<std::uint32_t>& order,
+                      DepthSortScratch& scratch, const std::function<void()>& poll) {
+    const std::size_t n = depth.size();
+    scratch.keys.resize(n);
+    scratch.keys_scratch.resize(n);
+    scratch.order_scratch.resize(n);
+    scratch.first_counts.resize(blocks);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+        std::array<Counts, kPasses>& counts = scratch.first_counts[block];
+        for (Counts& c : counts) c.fill(0);
+        const auto [begin, end] = block_range(n, block);
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::uint64_t key = farthest_first_key(depth[i]);
+            scratch.keys[i] = key;
+            order[i] = static_cast<std::uint32_t>(i);
+            for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(key >> (pass * kDigitBits)) & (kBuckets - 1)];
+        }
+        if (poll) poll();
+    });
+}
+
+/// One stable pass on the digit at `shift`. scratch.block_counts holds each
+/// block's counts of that digit; they become its cursors.
+inline void scatter_pass(int shift, std::size_t blocks, std::vector<std::uint32_t>& order, DepthSortScratch& scratch,
+                         const std::function<void()>& poll) {
+    // Bucket-major offsets: bucket b's slice, block after block.
+    std::uint32_t start = 0;
+    for (std::size_t b = 0; b < kBuckets; ++b) {
+        for (std::size_t block = 0; block < blocks; ++block) {
+            const std::uint32_t size = scratch.block_counts[block][b];
+            scratch.block_counts[block][b] = start;
+            start += size;
+        }
+    }
+    const std::vector<std::uint64_t>& keys = scratch.keys;
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+        Counts& cursor = scratch.block_counts[block];
+        const auto [begin, end] = block_range(keys.size(), block);
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::uint32_t slot = cursor[(keys[i] >> shift) & (kBuckets - 1)]++;
+            scratch.keys_scratch[slot] = keys[i];
+            scratch.order_scratch[slot] = order[i];
+        }
+        if (poll) poll();
+    });
+    scratch.keys.swap(scratch.keys_scratch);
+    order.swap(scratch.order_scratch);
+}
+
+}  // namespace depth_sort
+
 /// Fills `order` with the indices 0..n-1 ordered by descending depth, equal
 /// depths in index order: what std::stable_sort with `depth[a] > depth[b]`
 /// returns. Allocates nothing once `order` and `scratch` have held as many.
-/// `poll`, if given, is called after each block of work (from whichever
-/// thread did it): the renderer's progress reports.
+/// `poll`, if given, is called after each block of work, from whichever
+/// thread did it (the renderer's progress reports).
 inline void farthest_first_order(const std::vector<double>& depth, std::vector<std::uint32_t>& order,
                                  DepthSortScratch& scratch, const std::function<void()>& poll = nullptr) {
     using namespace depth_sort;
     const std::size_t n = depth.size();
     order.resize(n);
     if (n < 256) {
-        // Insertion sort: stable, and (unlike std::stable_sort) no temporary buffer.
-        for (std::size_t i = 0; i < n; ++i) {
-            std::size_t j = i;
-            for (; j > 0 && depth[order[j - 1]] < depth[i]; --j) order[j] = order[j - 1];
-            order[j] = static_cast<std::uint32_t>(i);
-        }
+        insertion_order(depth, order);
         return;
     }
     const std::size_t blocks = (n + kBlock - 1) / kBlock;
-    const auto block_range = [n](std::size_t block) {
-        return std::pair<std::size_t, std::size_t>(block * kBlock, std::min(n, (block + 1) * kBlock));
-    };
-
-    std::vector<std::uint64_t>& keys = scratch.keys;
-    std::vector<std::uint64_t>& keys_scratch = scratch.keys_scratch;
-    std::vector<std::uint32_t>& order_scratch = scratch.order_scratch;
-    keys.resize(n);
-    keys_scratch.resize(n);
-    order_scratch.resize(n);
-    std::vector<std::array<Counts, kPasses>>& first_counts = scratch.first_counts;
-    first_counts.resize(blocks);
-    // The first pass over the depths makes the keys and every pass's digit
-    // counts per block; a digit every key shares leaves the order as it is.
-    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
-        std::array<Counts, kPasses>& counts = first_counts[block];
-        for (Counts& c : counts) c.fill(0);
-        const auto [begin, end] = block_range(block);
-        for (std::size_t i = begin; i < end; ++i) {
-            const std::uint64_t key = farthest_first_key(depth[i]);
-            keys[i] = key;
-            order[i] = static_cast<std::uint32_t>(i);
-            for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(key >> (pass * kDigitBits)) & (kBuckets - 1)];
-        }
-        if (poll) poll();
-    });
-
-    std::vector<Counts>& block_counts = scratch.block_counts;
-    block_counts.resize(blocks);
+    make_keys(depth, blocks, order, scratch, poll);
+    scratch.block_counts.resize(blocks);
     bool first_pass_done = false;
     for (int pass = 0; pass < kPasses; ++pass) {
         const int shift = pass * kDigitBits;
         Counts total{};
         for (std::size_t block = 0; block < blocks; ++block) {
-            for (std::size_t b = 0; b < kBuckets; ++b) total[b] += first_counts[block][pass][b];
+            for (std::size_t b = 0; b < kBuckets; ++b) total[b] += scratch.first_counts[block][pass][b];
         }
+        // A digit every key shares leaves the order as it is.
         if (std::any_of(total.begin(), total.end(), [n](std::uint32_t c) { return c == n; })) continue;
-        // The keys' blocks moved in earlier passes: count this pass's digits afresh.
         if (first_pass_done) {
+            // The keys moved in earlier passes: count this pass's digits afresh.
             tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
-                Counts& c = block_counts[block];
+                Counts& c = scratch.block_counts[block];
                 c.fill(0);
-                const auto [begin, end] = block_range(block);
-                for (std::size_t i = begin; i < end; ++i) ++c[(keys[i] >> shift) & (kBuckets - 1)];
+                const auto [begin, end] = block_range(n, block);
+                for (std::size_t i = begin; i < end; ++i) ++c[(scratch.keys[i] >> shift) & (kBuckets - 1)];
                 if (poll) poll();
             });
         } else {
-            for (std::size_t block = 0; block < blocks; ++block) block_counts[block] = first_counts[block][pass];
+            for (std::size_t block = 0; block < blocks; ++block) scratch.block_counts[block] = scratch.first_counts[block][pass];
         }
-        // Bucket-major offsets: bucket b's slice, block after block.
-        std::uint32_t start = 0;
-        for (std::size_t b = 0; b < kBuckets; ++b) {
-            for (std::size_t block = 0; block < blocks; ++block) {
-                const std::uint32_t size = block_counts[block][b];
-                block_counts[block][b] = start;
-                start += size;
-            }
-        }
-        tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
-            Counts& cursor = block_counts[block];
-            const auto [begin, end] = block_range(block);
-            for (std::size_t i = begin; i < end; ++i) {
-                const std::uint32_t slot = cursor[(keys[i] >> shift) & (kBuckets - 1)]++;
-                keys_scratch[slot] = keys[i];
-                order_scratch[slot] = order[i];
-            }
-            if (poll) poll();
-        });
-        keys.swap(keys_scratch);
-        order.swap(order_scratch);
+        scatter_pass(shift, blocks, order, scratch, poll);
         first_pass_done = true;
     }
 }

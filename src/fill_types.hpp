@@ -34,7 +34,7 @@ struct DrawTriangle {
     std::uint32_t source;        ///< index of the mesh triangle it comes from (the id output)
 };
 
-/// The rows of the image one task fills, and what it counts.
+/// The rows of the image (in samples) one task fills, and what it counts.
 template <typename Real>
 struct FillTarget {
     Image& image;

@@ -1,5 +1,5 @@
 // Text names of shaders and lighting selections, as scene files and the
-// command line spell them (../shared/scene-format.md, "shader" and "lighting").
+// command line spell them (docs/scene-format.md, "shader" and "lighting").
 #include <stdexcept>
 #include <string>
 

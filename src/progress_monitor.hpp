@@ -8,6 +8,7 @@
 #include <chrono>
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <thread>
 
 #include "phongrast/progress.hpp"
@@ -18,7 +19,11 @@ class ProgressMonitor {
 public:
     /// `callback` may be empty: then every member is a cheap no-op and nothing is ever cancelled.
     explicit ProgressMonitor(const ProgressCallback& callback)
-        : callback_(callback), caller_(std::this_thread::get_id()), last_report_(std::chrono::steady_clock::now()) {}
+        : callback_(callback), caller_(std::this_thread::get_id()), last_report_(std::chrono::steady_clock::now()) {
+        if (enabled()) poll_ = [this] { poll(); };  // small enough for std::function's own storage: no allocation
+    }
+    ProgressMonitor(const ProgressMonitor&) = delete;
+    ProgressMonitor& operator=(const ProgressMonitor&) = delete;
 
     bool enabled() const { return static_cast<bool>(callback_); }
 
@@ -58,6 +63,10 @@ public:
         report_if_due(pieces_done_.load(std::memory_order_relaxed));
     }
 
+    /// poll() as a function for loops outside the pipeline (normals, the
+    /// painter's sort); empty without a callback, so they skip even the call.
+    const std::function<void()>& poll_function() const { return poll_; }
+
     /// Between stages, on the calling thread: throws RenderCancelled if a report asked to stop.
     void throw_if_cancelled() const {
         if (cancelled()) throw RenderCancelled();
@@ -90,6 +99,7 @@ private:
     }
 
     const ProgressCallback& callback_;
+    std::function<void()> poll_;
     const std::thread::id caller_;
     std::chrono::steady_clock::time_point last_report_;
     double stage_begin_ = 0.0, stage_end_ = 1.0;

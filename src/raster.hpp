@@ -1,6 +1,6 @@
 // Exact triangle coverage in fixed point (internal header).
 //
-// Conventions (../shared/scene-format.md, "Camera"), reproduced here because
+// Conventions (docs/scene-format.md, "Camera"), reproduced here because
 // every rule below depends on them:
 //   * Continuous pixel coordinates: x = column, y = row, rows grow downward.
 //   * Pixel (i, j) is sampled at its centre (j + 0.5, i + 0.5).

@@ -1,4 +1,4 @@
-// The accuracy report's machinery (bench/accuracy/*.hpp): error metrics,
+// The accuracy report's machinery (tests/support/: image_compare, pareto, accuracy_configurations, scenes): error metrics,
 // Pareto front, configuration enumeration, and three properties of the
 // report on small images.
 #include <algorithm>
@@ -7,14 +7,14 @@
 
 #include <catch2/catch.hpp>
 
-#include "accuracy_metrics.hpp"
-#include "configurations.hpp"
-#include "pareto.hpp"
 #include "phongrast/render.hpp"
-#include "scenes.hpp"
+#include "support/accuracy_configurations.hpp"
+#include "support/image_compare.hpp"
+#include "support/pareto.hpp"
+#include "support/scenes.hpp"
 
 using namespace phongrast;
-using namespace phongrast::accuracy;
+using namespace phongrast::support;
 
 namespace {
 

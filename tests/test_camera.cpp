@@ -1,4 +1,4 @@
-// The camera follows ../shared/scene-format.md ("Camera") exactly.
+// The camera follows docs/scene-format.md ("Camera") exactly.
 #include <catch2/catch.hpp>
 
 #include "phongrast/camera.hpp"

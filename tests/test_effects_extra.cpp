@@ -1,4 +1,4 @@
-// Issue 6, the requirements test_effects.cpp leaves open: more configurations
+// What test_effects.cpp leaves open: more configurations
 // where a specialised kernel must match the general one bit for bit, term
 // counts for every zero that should cost nothing (kd, ka, Ia, dark lights) in
 // every shader, the triangle accounting of RenderStats, and back-face culling

@@ -23,10 +23,10 @@ Scene fuzz_scene(const Mesh& mesh) {
 }  // namespace
 
 // fuzz/corpus/obj/regression-huge-coordinate.obj: a vertex at y = 7.8e50,
-// behind the eye. Clipping it at the near plane interpolated its position in
-// float, where 7.8e50 is infinite, so the new corner projected to NaN and
-// the fixed-point snapping overflowed (UBSan: signed integer overflow in
-// edge_value). Such a corner is now skipped with its triangle; the rest draws.
+// behind the eye. Clipping it at the near plane interpolates its position in
+// float, where 7.8e50 is infinite, so the new corner projects to NaN, which
+// the fixed-point snapping could not take (signed integer overflow in
+// edge_value). Such a corner is skipped with its triangle; the rest draws.
 TEST_CASE("a vertex beyond float's range behind the eye: finite picture, no overflow, the rest unchanged") {
     Mesh mesh;
     mesh.positions = {{0, 0, 0}, {1, 7.77777777777777777e50, 0}, {0, 1, 0}, {0, 0, 1}};

@@ -1,5 +1,5 @@
 // light() and its three terms against values computed by hand from the
-// contract's formula (../shared/scene-format.md, "Lighting").
+// contract's formula (docs/scene-format.md, "Lighting").
 #include <cmath>
 
 #include <catch2/catch.hpp>

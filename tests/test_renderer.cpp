@@ -1,6 +1,6 @@
 // phongrast::Renderer: frame after frame, the pictures and statistics of
 // render(), and no memory allocated once it has rendered a frame at least as
-// large (issue 8: "no allocation per triangle or per frame after the first").
+// large: no allocation per triangle, nor per frame after the first.
 //
 // Allocations are counted by replacing the global operator new (and, so that
 // every new meets its own delete, the matching deletes and nothrow forms) in

@@ -1,4 +1,4 @@
-// phongrast_accuracy: what accuracy costs in time (issue 7).
+// phongrast_accuracy: what accuracy costs in time.
 //
 // For each scene: renders the reference (Phong, exact preset, depth buffer,
 // 8x8 samples, double), screens every combination of the accuracy options
@@ -22,22 +22,19 @@
 #include <CLI/CLI.hpp>
 #include <tbb/info.h>
 
-#include "accuracy_metrics.hpp"
-#include "configurations.hpp"
-#include "pareto.hpp"
 #include "phongrast/render.hpp"
-#include "report_images.hpp"
-#include "scenes.hpp"
-
-#ifdef PHONGRAST_ACCURACY_WITH_IO
-#include "phongrast/io/auto_scene.hpp"
-#include "phongrast/io/obj_file.hpp"
-#include "phongrast/io/scene_file.hpp"
-#endif
+#include "pictures.hpp"
+#include "support/accuracy_configurations.hpp"
+#include "support/image_compare.hpp"
+#include "support/pareto.hpp"
+#include "support/scenes.hpp"
+#include "support/shared_scenes.hpp"
+#include "support/timing.hpp"
 
 namespace fs = std::filesystem;
 using namespace phongrast;
-using namespace phongrast::accuracy;
+using namespace phongrast::support;
+using namespace phongrast_bench;
 
 namespace {
 
@@ -50,7 +47,7 @@ struct Settings {
     bool shared_meshes = true;
     /// Above this many triangles only the timed configurations are rendered (no screening of all 480).
     std::size_t screen_max_triangles = 20000;
-    std::string shared_assets = PHONGRAST_SHARED_ASSETS_DIR;
+    std::string shared_assets = shared_assets_folder();
     std::string default_scene = PHONGRAST_PROJECT_ASSETS_DIR "/default.json";
 };
 
@@ -65,17 +62,13 @@ struct Row {
     PointKind kind = PointKind::screened;
 };
 
-double milliseconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 Image render_as(Scene scene, const Configuration& c, int threads, double* ms = nullptr) {
     scene.shader = c.shader;
     RenderOptions options = c.options;
     options.threads = threads;
-    const auto start = std::chrono::steady_clock::now();
-    Image image = render(scene, options).image;
-    if (ms) *ms = milliseconds_since(start);
+    Image image;
+    const double elapsed = time_ms([&] { image = render(scene, options).image; });
+    if (ms) *ms = elapsed;
     return image;
 }
 
@@ -83,9 +76,7 @@ double median_ms(const Scene& scene, const Configuration& c, int threads, int ru
     render_as(scene, c, threads);  // warm-up
     std::vector<double> times(static_cast<std::size_t>(runs));
     for (double& t : times) render_as(scene, c, threads, &t);
-    std::sort(times.begin(), times.end());
-    const std::size_t n = times.size();
-    return n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
+    return median(times);
 }
 
 std::string fixed(double value, int digits) {
@@ -105,43 +96,21 @@ std::string general(double value) {
 
 std::vector<NamedScene> load_scenes(const Settings& s) {
     std::vector<NamedScene> scenes;
-#ifdef PHONGRAST_ACCURACY_WITH_IO
     if (fs::exists(s.default_scene)) {
-        io::SceneFile file = io::read_scene_file(s.default_scene);
-        io::ObjFile obj = io::read_obj(file.mesh_path);
-        NamedScene named{"default", "the default scene (assets/default.json)", file.scene};
-        named.scene.mesh = std::move(obj.mesh);
-        named.scene.material = io::resolve_material(file.material, obj.material, nullptr);
+        NamedScene named{"default", "the default scene (assets/default.json)", read_scene_with_mesh(s.default_scene)};
         named.scene.image.rows = named.scene.image.columns = s.size;
         scenes.push_back(std::move(named));
     } else {
         std::cerr << "note: " << s.default_scene << " not found: skipping the default scene\n";
     }
-#else
-    std::cerr << "note: built without phongrast::io: skipping the default scene and the shared meshes\n";
-#endif
     for (NamedScene& generated : generated_scenes(s.size)) scenes.push_back(std::move(generated));
-#ifdef PHONGRAST_ACCURACY_WITH_IO
     if (s.shared_meshes) {
-        if (!fs::is_directory(s.shared_assets)) {
-            std::cerr << "note: " << s.shared_assets << " not found: skipping the shared meshes\n";
-        } else {
-            for (const char* name : {"suzanne", "dolphins_colored", "spot", "teapot", "stanford-bunny", "armadillo"}) {
-                const std::string path = s.shared_assets + "/" + name + ".obj";
-                if (!fs::exists(path)) {
-                    std::cerr << "note: " << path << " not found: skipping it\n";
-                    continue;
-                }
-                io::ObjFile obj = io::read_obj(path);
-                const std::size_t triangles = obj.mesh.triangles.size();
-                NamedScene named{name, "", io::frame_mesh(std::move(obj.mesh), s.size, s.size)};
-                named.description = "../shared/assets/" + std::string(name) + ".obj, " + std::to_string(triangles) +
-                                    " triangles, framed by io::frame_mesh";
-                scenes.push_back(std::move(named));
-            }
+        std::vector<std::string> notes;
+        for (NamedScene& named : shared_scenes(s.shared_assets, s.size, s.size, {}, notes)) {
+            scenes.push_back(std::move(named));
         }
+        for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
     }
-#endif
     if (!s.only_scenes.empty()) {
         std::vector<NamedScene> kept;
         for (NamedScene& scene : scenes) {
@@ -275,10 +244,10 @@ std::string run_scene(const NamedScene& named, const Settings& s) {
     }
     for (std::size_t index : measured) {
         const Row& r = rows[index];
-        // Only the presets are named on the plot; the table marks the front.
-        const bool labelled = r.name == "seed" || r.name == "exact";
-        if (std::find(front.begin(), front.end(), index) != front.end()) front_points.push_back(points.size());
-        points.push_back({r.ms_one, r.error.rmse, r.kind, labelled ? r.name : ""});
+        // Every point of the front is named by its configuration, and so are the two presets.
+        const bool on_front = std::find(front.begin(), front.end(), index) != front.end();
+        if (on_front) front_points.push_back(points.size());
+        points.push_back({r.ms_one, r.error.rmse, r.kind, on_front || r.name == "seed" || r.name == "exact" ? r.name : ""});
     }
     std::sort(front_points.begin(), front_points.end(),
               [&](std::size_t a, std::size_t b) { return points[a].milliseconds < points[b].milliseconds; });

@@ -2,9 +2,7 @@
 // same scenes, same camera, same painter's order: times and image agreement.
 //
 // One process measures one thread count, because llvmpipe reads
-// LP_NUM_THREADS once, when its first context is created; run.sh runs 1 and 2.
-#include <algorithm>
-#include <chrono>
+// LP_NUM_THREADS once, when its first context is created; bench/run.sh llvmpipe runs 1 and 2.
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -15,35 +13,17 @@
 
 #include <CLI/CLI.hpp>
 
-#include "asset_scenes.hpp"
-#include "heat_map.hpp"
-#include "image_agreement.hpp"
-#include "llvmpipe_renderer.hpp"
-#include "scenes.hpp"
+#include "pictures.hpp"
+#include "support/image_compare.hpp"
+#include "support/llvmpipe_renderer.hpp"
+#include "support/scenes.hpp"
+#include "support/shared_scenes.hpp"
+#include "support/timing.hpp"
 
 namespace {
 
-using llvmpipe_compare::NamedScene;
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-/// Runs every contender once as a warm-up, then `repeat` rounds that call each
-/// contender once in turn, and returns each one's median. Interleaving keeps
-/// the ratios fair when the machine's load changes during the measurement.
-std::vector<double> interleaved_medians(int repeat, const std::vector<std::function<double()>>& contenders) {
-    for (const auto& run : contenders) run();
-    std::vector<std::vector<double>> samples(contenders.size());
-    for (int round = 0; round < repeat; ++round) {
-        for (std::size_t k = 0; k < contenders.size(); ++k) samples[k].push_back(contenders[k]());
-    }
-    std::vector<double> medians;
-    for (const auto& values : samples) medians.push_back(median(values));
-    return medians;
-}
+namespace support = phongrast::support;
+using support::NamedScene;
 
 struct Settings {
     int threads = 1;
@@ -55,16 +35,18 @@ struct Settings {
 
 std::vector<NamedScene> make_scenes(const Settings& settings) {
     std::vector<NamedScene> scenes;
-    scenes.push_back(llvmpipe_compare::icosphere_scene("icosphere-9.7k", 22, 512));
+    scenes.push_back(support::icosphere_scene("icosphere-9.7k", 22, 512));
     if (settings.assets) {
-        for (NamedScene& scene : llvmpipe_compare::asset_scenes(512)) scenes.push_back(std::move(scene));
+        std::vector<std::string> notes;
+        for (NamedScene& scene : support::comparison_scenes(512, notes)) scenes.push_back(std::move(scene));
+        for (const std::string& note : notes) std::cerr << "bench_llvmpipe: " << note << "\n";
     }
-    if (settings.large) scenes.push_back(llvmpipe_compare::icosphere_scene("icosphere-1.3M", 256, 1024));
+    if (settings.large) scenes.push_back(support::icosphere_scene("icosphere-1.3M", 256, 1024));
     return scenes;
 }
 
 void run(const Settings& settings) {
-    llvmpipe_compare::LlvmpipeRenderer llvmpipe;
+    support::LlvmpipeRenderer llvmpipe;
     std::printf("llvmpipe: %s, LP_NUM_THREADS=%s; phongrast threads=%d; median of %d interleaved rounds after 1 warm-up\n\n",
                 llvmpipe.description().c_str(), std::getenv("LP_NUM_THREADS"), settings.threads, settings.repeat);
 
@@ -93,11 +75,11 @@ void run(const Settings& settings) {
             phongrast::Image phongrast_image;
             std::vector<double> sort_s;
             llvmpipe.load(scene);
-            const std::vector<double> medians = interleaved_medians(
-                settings.repeat, {[&] { return time_phongrast(exact_renderer, &phongrast_image); },
+            const std::vector<double> medians = support::interleaved_medians(
+                settings.repeat, 1, {[&] { return time_phongrast(exact_renderer, &phongrast_image); },
                                   [&] { return time_phongrast(seed_renderer, nullptr); },
                                   [&] {
-                                      const llvmpipe_compare::FrameTimes times = llvmpipe.draw();
+                                      const support::FrameTimes times = llvmpipe.draw();
                                       sort_s.push_back(times.sort);
                                       return times.total;
                                   }});
@@ -110,24 +92,24 @@ void run(const Settings& settings) {
             std::printf("| %s | %zu | %dx%d | %s | %d | %.2f | %.2f | %.2f (%.2f) | %.3f | %.3f | %s |\n",
                         named.name.c_str(), scene.mesh.triangles.size(), scene.image.columns, scene.image.rows,
                         phongrast::to_string(shader), settings.threads, 1e3 * exact_s, 1e3 * seed_s,
-                        1e3 * llvmpipe_s, 1e3 * median(sort_s), exact_ratio, seed_ratio,
+                        1e3 * llvmpipe_s, 1e3 * support::median(sort_s), exact_ratio, seed_ratio,
                         exact_ratio <= 0.25 && seed_ratio <= 0.25 ? "met"
                         : exact_ratio <= 0.25 || seed_ratio <= 0.25 ? (exact_ratio <= 0.25 ? "exact only" : "seed only")
                                                                     : "not met");
             std::fflush(stdout);
 
-            const llvmpipe_compare::ImageAgreement agreement =
-                llvmpipe_compare::compare_images(phongrast_image, llvmpipe_image, scene.image.background);
+            const support::ImageAgreement agreement =
+                support::agreement(phongrast_image, llvmpipe_image, scene.image.background);
             agreement_lines.push_back(named.name + " " + phongrast::to_string(shader) +
                                       " (first = phongrast exact, second = llvmpipe): " +
-                                      llvmpipe_compare::summary(agreement));
+                                      support::summary(agreement));
 
             if (!settings.images_dir.empty()) {
                 std::filesystem::create_directories(settings.images_dir);
                 const std::string stem = settings.images_dir + "/" + named.name + "-" + phongrast::to_string(shader);
-                llvmpipe_compare::write_png(stem + "-phongrast.png", phongrast_image);
-                llvmpipe_compare::write_png(stem + "-llvmpipe.png", llvmpipe_image);
-                llvmpipe_compare::write_heat_map(stem + "-difference.png", phongrast_image, llvmpipe_image,
+                phongrast_bench::write_png(stem + "-phongrast.png", phongrast_image);
+                phongrast_bench::write_png(stem + "-llvmpipe.png", llvmpipe_image);
+                phongrast_bench::write_difference_map(stem + "-difference.png", phongrast_image, llvmpipe_image,
                                                  scene.image.background);
             }
         }

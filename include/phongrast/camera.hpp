@@ -1,4 +1,4 @@
-// The pinhole look-at camera of ../shared/scene-format.md ("Camera"):
+// The pinhole look-at camera of docs/scene-format.md ("Camera"):
 //
 //   f = normalize(lookat - eye), r = normalize(cross(f, up)), u = cross(r, f)
 //   camera coordinates of p:  x_c = r.(p-eye), y_c = u.(p-eye), z_c = f.(p-eye)

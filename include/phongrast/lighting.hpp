@@ -1,4 +1,4 @@
-// Phong lighting exactly as ../shared/scene-format.md ("Lighting") states it:
+// Phong lighting exactly as docs/scene-format.md ("Lighting") states it:
 //
 //   I = ka * Ia * c                                              (ambient)
 //     + sum over lights of  Ip * kd * c * max(0, N.L)            (diffuse)

@@ -1,6 +1,7 @@
 // render(): the seed's render_object. Computes normals, projects, sorts the
 // triangles farthest first by mean camera depth (stable), and fills each with
-// the chosen shader, following ../shared/scene-format.md.
+// the chosen shader, following the scene contract in docs/scene-format.md.
+// docs/architecture.md follows a scene through the stages.
 #ifndef PHONGRAST_RENDER_HPP
 #define PHONGRAST_RENDER_HPP
 
@@ -163,7 +164,23 @@ struct RenderStats {
     EffectSet effects;                        ///< what was simulated
     bool back_faces_culled = false;           ///< the mesh was found closed with the eye outside, and culled
     double seconds = 0.0;                    ///< wall time of the whole render
+
+    /// Adds every counter and the seconds of `other` (a sum over several
+    /// renders); effects and back_faces_culled stay this one's.
+    RenderStats& operator+=(const RenderStats& other);
 };
+
+/// One counter of RenderStats: its name (the field's, as the phongrast
+/// command's --stats JSON writes it) and the field.
+struct RenderCounter {
+    const char* name;
+    std::uint64_t RenderStats::*field;
+    /// A count of triangles, the same for every sample position of a render
+    /// (false: a count of work, which each rotated-grid pass adds to).
+    bool counts_triangles;
+};
+/// Every counter of RenderStats, in the order the struct declares them.
+const std::vector<RenderCounter>& render_counters();
 
 struct RenderResult {
     Image image;

@@ -1,131 +1,168 @@
 #include "phongrast/io/obj_file.hpp"
 
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
+#include <limits>
 #include <sstream>
 
-#include "obj_check.hpp"
+#include <tbb/parallel_for.h>
+
+#include "file_bytes.hpp"
+#include "mesh_readers.hpp"
+#include "obj_chunk.hpp"
+#include "obj_materials.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/text_file.hpp"
-#include "tiny_obj_loader_double.hpp"
 
 namespace phongrast::io {
 namespace {
 
-std::string read_whole_file(const std::string& path, const char* what) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) {
-        throw FileError(path + ": " + what + " not found (no such file)");
+/// Chunks of about this many bytes, cut after a newline: large enough that
+/// the per-chunk bookkeeping is noise, small enough to balance the cores.
+constexpr std::size_t chunk_bytes = std::size_t(1) << 20;
+
+/// body(i) for every chunk: on the calling thread for a single chunk (small
+/// files pay no task overhead), else in parallel.
+template <class Body>
+void for_each_chunk(std::size_t count, const Body& body) {
+    if (count == 1) {
+        body(std::size_t(0));
+    } else {
+        tbb::parallel_for(std::size_t(0), count, body, tbb::simple_partitioner());
     }
-    if (std::filesystem::is_directory(path, error)) {
-        throw FileError(path + ": is a folder; expected " + std::string(what) + " file");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError(path + ": cannot read " + what + ": " + std::strerror(errno));
-    std::ostringstream contents;
-    contents << in.rdbuf();
-    if (in.bad()) throw FileError(path + ": cannot read " + what + ": " + std::strerror(errno));
-    return contents.str();
 }
 
-std::vector<std::string> split_warning_lines(const std::string& path, const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    std::string line;
-    while (std::getline(in, line)) {
-        if (!line.empty()) lines.push_back(path + ": " + line);
+std::vector<std::string_view> split_into_chunks(std::string_view text) {
+    std::vector<std::string_view> chunks;
+    std::size_t start = 0;
+    while (start < text.size() || chunks.empty()) {
+        std::size_t cut = text.size();
+        if (text.size() - start > 2 * chunk_bytes) {
+            const std::size_t newline = text.find('\n', start + chunk_bytes);
+            cut = newline == std::string_view::npos ? text.size() : newline + 1;
+        }
+        chunks.push_back(text.substr(start, cut - start));
+        start = cut;
     }
-    return lines;
+    return chunks;
 }
 
-glm::vec3 to_vec3(const tinyobj::real_t (&values)[3]) {
-    return {static_cast<float>(values[0]), static_cast<float>(values[1]), static_cast<float>(values[2])};
+/// Where each chunk starts in the file: lines, `v` lines and faces before it.
+struct ChunkStarts {
+    std::vector<std::size_t> lines;
+    std::vector<std::int64_t> vertices;
+    std::vector<std::size_t> faces;
+    std::vector<std::size_t> triangles;
+    std::int64_t vertices_in_file = 0;
+    std::size_t faces_in_file = 0;
+    std::size_t triangles_in_file = 0;
+};
+
+ChunkStarts count_chunk_starts(const std::vector<ObjChunk>& chunks) {
+    ChunkStarts starts;
+    std::size_t lines = 0;
+    for (const ObjChunk& chunk : chunks) {
+        starts.lines.push_back(lines);
+        starts.vertices.push_back(starts.vertices_in_file);
+        starts.faces.push_back(starts.faces_in_file);
+        starts.triangles.push_back(starts.triangles_in_file);
+        lines += chunk.newlines;
+        starts.vertices_in_file += static_cast<std::int64_t>(chunk.positions.size());
+        starts.faces_in_file += chunk.faces;
+        starts.triangles_in_file += chunk.triangles.size();
+    }
+    return starts;
 }
 
-PhongMaterial to_phong(const tinyobj::material_t& material) {
-    PhongMaterial phong;
-    phong.ka = to_vec3(material.ambient);
-    phong.kd = to_vec3(material.diffuse);
-    phong.ks = to_vec3(material.specular);
-    phong.n = static_cast<float>(material.shininess);
-    return phong;
+bool corners_in_range(const ObjChunk& chunk, std::int64_t vertices_before, std::int64_t vertices_in_file) {
+    for (const auto& triangle : chunk.triangles) {
+        for (const TaggedCorner corner : triangle) {
+            const std::int64_t vertex = resolve_corner(corner, vertices_before);
+            if (vertex < 1 || vertex > vertices_in_file) return false;
+        }
+    }
+    return true;
+}
+
+/// Throws the file's first error, in line order, as a sequential reader would:
+/// the first chunk with a bad line or index is parsed again, knowing the
+/// vertices before it, for the precise message.
+void throw_first_error(const std::vector<std::string_view>& texts, const std::vector<ObjChunk>& chunks,
+                       const ChunkStarts& starts, const std::string& path) {
+    std::vector<char> bad(chunks.size(), 0);
+    for_each_chunk(chunks.size(), [&](std::size_t i) {
+        bad[i] = chunks[i].error.has_value() ||
+                 !corners_in_range(chunks[i], starts.vertices[i], starts.vertices_in_file);
+    });
+    for (std::size_t i = 0; i < chunks.size(); ++i) {
+        if (!bad[i]) continue;
+        const ObjIndexRange range{starts.vertices[i], starts.vertices_in_file};
+        const ObjChunk checked = parse_obj_chunk(texts[i], &range);
+        const ObjChunkError error = checked.error.value_or(ObjChunkError{1, "unreadable face"});
+        throw FileError(path + ":" + std::to_string(starts.lines[i] + error.line) + ": " + error.message);
+    }
+    if (starts.faces_in_file == 0) {
+        throw FileError(path + ": no faces ('f' lines); expected a mesh with at least one triangle");
+    }
+    if (starts.vertices_in_file > std::numeric_limits<std::uint32_t>::max()) {
+        throw FileError(path + ": " + std::to_string(starts.vertices_in_file) +
+                        " vertices; expected at most 4294967295");
+    }
+}
+
+Mesh assemble_mesh(const std::vector<ObjChunk>& chunks, const ChunkStarts& starts) {
+    Mesh mesh;
+    mesh.positions.resize(static_cast<std::size_t>(starts.vertices_in_file));
+    mesh.colors.resize(mesh.positions.size());
+    mesh.triangles.resize(starts.triangles_in_file);
+    for_each_chunk(chunks.size(), [&](std::size_t i) {
+        const ObjChunk& chunk = chunks[i];
+        const auto vertex_start = static_cast<std::ptrdiff_t>(starts.vertices[i]);
+        std::copy(chunk.positions.begin(), chunk.positions.end(), mesh.positions.begin() + vertex_start);
+        std::copy(chunk.colors.begin(), chunk.colors.end(), mesh.colors.begin() + vertex_start);
+        Triangle* out = mesh.triangles.data() + starts.triangles[i];
+        for (const auto& triangle : chunk.triangles) {
+            for (int k = 0; k < 3; ++k) {
+                (*out)[k] = static_cast<std::uint32_t>(resolve_corner(triangle[k], starts.vertices[i]) - 1);
+            }
+            ++out;
+        }
+    });
+    return mesh;
+}
+
+std::vector<ObjMaterialUse> material_uses(const std::vector<ObjChunk>& chunks, const ChunkStarts& starts) {
+    std::vector<ObjMaterialUse> uses;
+    for (std::size_t i = 0; i < chunks.size(); ++i) {
+        for (const ObjMaterialStatement& statement : chunks[i].materials) {
+            uses.push_back({statement.is_library, statement.argument, starts.lines[i] + statement.line,
+                            starts.faces[i] + statement.faces_before});
+        }
+    }
+    return uses;
 }
 
 }  // namespace
 
-ObjFile read_obj(const std::string& path) {
-    const std::string text = read_whole_file(path, "mesh");
-    std::vector<glm::dvec3> exact_positions = check_obj_text(text, path);
-
-    tinyobj::attrib_t attributes;
-    std::vector<tinyobj::shape_t> shapes;
-    std::vector<tinyobj::material_t> materials;
-    std::string warnings;
-    std::string errors;
-    std::istringstream stream(text);
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    tinyobj::MaterialFileReader material_reader(folder.empty() ? std::string("./") : folder.string() + "/");
-    // triangulate = false: phongrast does the contract's fan itself (tinyobjloader
-    // may split quads along the other diagonal).
-    const bool loaded = tinyobj::LoadObj(&attributes, &shapes, &materials, &warnings, &errors, &stream,
-                                         &material_reader, /*triangulate=*/false,
-                                         /*default_vcols_fallback=*/true);
-    if (!loaded || !errors.empty()) {
-        throw FileError(path + ": cannot parse OBJ: " + (errors.empty() ? std::string("unknown error") : errors));
-    }
+MeshFile parse_obj(std::string_view text, const std::string& path) {
+    const std::vector<std::string_view> texts = split_into_chunks(text);
+    std::vector<ObjChunk> chunks(texts.size());
+    for_each_chunk(texts.size(), [&](std::size_t i) { chunks[i] = parse_obj_chunk(texts[i]); });
+    const ChunkStarts starts = count_chunk_starts(chunks);
+    throw_first_error(texts, chunks, starts, path);
 
     ObjFile result;
-    result.warnings = split_warning_lines(path, warnings);
-    Mesh& mesh = result.mesh;
-    const std::size_t vertex_count = attributes.vertices.size() / 3;
-    if (exact_positions.size() != vertex_count) {
-        throw FileError(path + ": tinyobjloader read " + std::to_string(vertex_count) + " vertices, expected " +
-                        std::to_string(exact_positions.size()) + " (one per 'v' line)");
-    }
-    // The same numbers tinyobjloader read, but correctly rounded (see check_obj_text).
-    mesh.positions = std::move(exact_positions);
-    // With default_vcols_fallback tinyobjloader gives every vertex a colour,
-    // white (1, 1, 1) where the file has none, exactly the contract's default.
-    if (attributes.colors.size() == attributes.vertices.size()) {
-        mesh.colors.reserve(vertex_count);
-        for (std::size_t i = 0; i < vertex_count; ++i) {
-            mesh.colors.emplace_back(static_cast<float>(attributes.colors[3 * i]),
-                                     static_cast<float>(attributes.colors[3 * i + 1]),
-                                     static_cast<float>(attributes.colors[3 * i + 2]));
-        }
-    }
-
-    for (const tinyobj::shape_t& shape : shapes) {
-        std::size_t corner = 0;
-        for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
-            const std::size_t corners = shape.mesh.num_face_vertices[face];
-            auto vertex = [&](std::size_t k) {
-                return static_cast<std::uint32_t>(shape.mesh.indices[corner + k].vertex_index);
-            };
-            for (std::size_t k = 1; k + 1 < corners; ++k) {  // fan: v0 v_k v_k+1
-                mesh.triangles.push_back({vertex(0), vertex(k), vertex(k + 1)});
-            }
-            if (!result.material && face < shape.mesh.material_ids.size()) {
-                const int id = shape.mesh.material_ids[face];
-                if (id >= 0 && static_cast<std::size_t>(id) < materials.size()) {
-                    result.material = to_phong(materials[static_cast<std::size_t>(id)]);
-                    result.material_name = materials[static_cast<std::size_t>(id)].name;
-                }
-            }
-            corner += corners;
-        }
-    }
-    try {
-        validate_mesh(mesh);  // the core's own check: a last guard, the pre-check should catch everything
-    } catch (const std::invalid_argument& error) {
-        throw FileError(path + ": " + error.what());
-    }
+    result.mesh = assemble_mesh(chunks, starts);
+    ObjMaterialChoice material = choose_obj_material(material_uses(chunks, starts), starts.faces_in_file, path);
+    result.material = material.material;
+    result.material_name = std::move(material.name);
+    result.warnings = std::move(material.warnings);
+    check_mesh(result.mesh, path);
     return result;
 }
+
+ObjFile read_obj(const std::string& path) { return parse_obj(FileBytes::read(path, "mesh").view(), path); }
 
 void write_obj(const Mesh& mesh, const std::string& path, const std::string& comment,
                int significant_digits) {

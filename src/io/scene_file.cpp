@@ -152,101 +152,103 @@ json parse_or_explain(const std::string& text, const std::string& name) {
     }
 }
 
-}  // namespace
-
-SceneFile parse_scene_json(const std::string& text, const std::string& name, const std::string& folder) {
-    const SceneReader reader(name);
-    const json document = parse_or_explain(text, name);
+void read_mesh_path(const SceneReader& reader, const json& document, const std::string& folder, SceneFile& result) {
     const json::json_pointer root;
-    reader.require_object(document, root);
-
-    SceneFile result;
-    Scene& scene = result.scene;
-    reader.warn_unknown(document, root,
-                        {"mesh", "camera", "image", "material", "ambient", "lights", "shader", "lighting"},
-                        &result.warnings);
-
     if (const json* mesh = reader.optional_field(document, root, "mesh")) {
         const std::string relative = reader.string(*mesh, root / "mesh");
-        if (relative.empty()) reader.fail(root / "mesh", "expected an OBJ file name, got an empty string");
+        if (relative.empty()) reader.fail(root / "mesh", "expected a mesh file name (.obj, .ply, .stl, .gltf, .glb), got an empty string");
         const std::filesystem::path mesh_path(relative);
         result.mesh_path = mesh_path.is_absolute() || folder.empty()
                                ? mesh_path.string()
                                : (std::filesystem::path(folder) / mesh_path).string();
     }
+}
 
+void read_camera(const SceneReader& reader, const json& document, SceneFile& result) {
+    const json::json_pointer root;
+    Camera& out = result.scene.camera;
     const json::json_pointer camera_at = root / "camera";
     const json& camera = reader.require_object(
         reader.required_field(document, root, "camera", "an object with eye, lookat, up, focal, sensor"), camera_at);
     reader.warn_unknown(camera, camera_at, {"eye", "lookat", "up", "focal", "sensor"}, &result.warnings);
-    scene.camera.eye = reader.triple(reader.required_field(camera, camera_at, "eye", "[x, y, z]"), camera_at / "eye");
-    scene.camera.lookat =
-        reader.triple(reader.required_field(camera, camera_at, "lookat", "[x, y, z]"), camera_at / "lookat");
+    out.eye = reader.triple(reader.required_field(camera, camera_at, "eye", "[x, y, z]"), camera_at / "eye");
+    out.lookat = reader.triple(reader.required_field(camera, camera_at, "lookat", "[x, y, z]"), camera_at / "lookat");
     if (const json* up = reader.optional_field(camera, camera_at, "up")) {
-        scene.camera.up = reader.triple(*up, camera_at / "up");
+        out.up = reader.triple(*up, camera_at / "up");
     }
-    scene.camera.focal =
-        reader.positive_number(reader.required_field(camera, camera_at, "focal", "a positive number"),
-                               camera_at / "focal");
+    out.focal = reader.positive_number(reader.required_field(camera, camera_at, "focal", "a positive number"),
+                                       camera_at / "focal");
     const json& sensor = reader.required_field(camera, camera_at, "sensor", "[height, width]");
     if (!sensor.is_array() || sensor.size() != 2) {
         reader.fail(camera_at / "sensor", "expected [height, width] (2 numbers), got " + type_of(sensor));
     }
-    scene.camera.sensor_height = reader.positive_number(sensor[0], camera_at / "sensor" / 0);
-    scene.camera.sensor_width = reader.positive_number(sensor[1], camera_at / "sensor" / 1);
+    out.sensor_height = reader.positive_number(sensor[0], camera_at / "sensor" / 0);
+    out.sensor_width = reader.positive_number(sensor[1], camera_at / "sensor" / 1);
+}
 
+void read_image(const SceneReader& reader, const json& document, SceneFile& result) {
+    const json::json_pointer root;
+    ImageSpec& out = result.scene.image;
     const json::json_pointer image_at = root / "image";
     const json& image = reader.require_object(
         reader.required_field(document, root, "image", "an object with height and width"), image_at);
     reader.warn_unknown(image, image_at, {"height", "width", "background"}, &result.warnings);
-    scene.image.rows = reader.image_side(reader.required_field(image, image_at, "height", "a positive integer"),
-                                         image_at / "height");
-    scene.image.columns = reader.image_side(reader.required_field(image, image_at, "width", "a positive integer"),
-                                            image_at / "width");
+    out.rows = reader.image_side(reader.required_field(image, image_at, "height", "a positive integer"),
+                                 image_at / "height");
+    out.columns = reader.image_side(reader.required_field(image, image_at, "width", "a positive integer"),
+                                    image_at / "width");
     if (const json* background = reader.optional_field(image, image_at, "background")) {
-        scene.image.background = glm::vec3(reader.triple(*background, image_at / "background"));
+        out.background = glm::vec3(reader.triple(*background, image_at / "background"));
     }
+}
 
-    if (const json* material = reader.optional_field(document, root, "material")) {
-        const json::json_pointer material_at = root / "material";
-        reader.require_object(*material, material_at);
-        reader.warn_unknown(*material, material_at, {"ka", "kd", "ks", "n"}, &result.warnings);
-        if (const json* ka = reader.optional_field(*material, material_at, "ka")) {
-            result.material.ka = reader.coefficient(*ka, material_at / "ka");
-        }
-        if (const json* kd = reader.optional_field(*material, material_at, "kd")) {
-            result.material.kd = reader.coefficient(*kd, material_at / "kd");
-        }
-        if (const json* ks = reader.optional_field(*material, material_at, "ks")) {
-            result.material.ks = reader.coefficient(*ks, material_at / "ks");
-        }
-        if (const json* n = reader.optional_field(*material, material_at, "n")) {
-            const double exponent = reader.number(*n, material_at / "n");
-            if (exponent < 0.0) reader.fail(material_at / "n", "expected a non-negative number, got " + n->dump());
-            result.material.n = static_cast<float>(exponent);
-        }
+void read_material(const SceneReader& reader, const json& document, SceneFile& result) {
+    const json::json_pointer root;
+    const json* material = reader.optional_field(document, root, "material");
+    if (material == nullptr) return;
+    const json::json_pointer material_at = root / "material";
+    reader.require_object(*material, material_at);
+    reader.warn_unknown(*material, material_at, {"ka", "kd", "ks", "n"}, &result.warnings);
+    if (const json* ka = reader.optional_field(*material, material_at, "ka")) {
+        result.material.ka = reader.coefficient(*ka, material_at / "ka");
     }
+    if (const json* kd = reader.optional_field(*material, material_at, "kd")) {
+        result.material.kd = reader.coefficient(*kd, material_at / "kd");
+    }
+    if (const json* ks = reader.optional_field(*material, material_at, "ks")) {
+        result.material.ks = reader.coefficient(*ks, material_at / "ks");
+    }
+    if (const json* n = reader.optional_field(*material, material_at, "n")) {
+        const double exponent = reader.number(*n, material_at / "n");
+        if (exponent < 0.0) reader.fail(material_at / "n", "expected a non-negative number, got " + n->dump());
+        result.material.n = static_cast<float>(exponent);
+    }
+}
 
+void read_lights(const SceneReader& reader, const json& document, SceneFile& result) {
+    const json::json_pointer root;
     if (const json* ambient = reader.optional_field(document, root, "ambient")) {
-        scene.ambient = glm::vec3(reader.triple(*ambient, root / "ambient"));
+        result.scene.ambient = glm::vec3(reader.triple(*ambient, root / "ambient"));
     }
-
-    if (const json* lights = reader.optional_field(document, root, "lights")) {
-        const json::json_pointer lights_at = root / "lights";
-        if (!lights->is_array()) reader.fail(lights_at, "expected an array of lights, got " + type_of(*lights));
-        for (std::size_t i = 0; i < lights->size(); ++i) {
-            const json::json_pointer light_at = lights_at / i;
-            const json& light = reader.require_object((*lights)[i], light_at);
-            reader.warn_unknown(light, light_at, {"position", "intensity"}, &result.warnings);
-            PointLight point;
-            point.position =
-                reader.triple(reader.required_field(light, light_at, "position", "[x, y, z]"), light_at / "position");
-            point.intensity = glm::vec3(
-                reader.triple(reader.required_field(light, light_at, "intensity", "[r, g, b]"), light_at / "intensity"));
-            scene.lights.push_back(point);
-        }
+    const json* lights = reader.optional_field(document, root, "lights");
+    if (lights == nullptr) return;
+    const json::json_pointer lights_at = root / "lights";
+    if (!lights->is_array()) reader.fail(lights_at, "expected an array of lights, got " + type_of(*lights));
+    for (std::size_t i = 0; i < lights->size(); ++i) {
+        const json::json_pointer light_at = lights_at / i;
+        const json& light = reader.require_object((*lights)[i], light_at);
+        reader.warn_unknown(light, light_at, {"position", "intensity"}, &result.warnings);
+        PointLight point;
+        point.position =
+            reader.triple(reader.required_field(light, light_at, "position", "[x, y, z]"), light_at / "position");
+        point.intensity = glm::vec3(
+            reader.triple(reader.required_field(light, light_at, "intensity", "[r, g, b]"), light_at / "intensity"));
+        result.scene.lights.push_back(point);
     }
+}
 
+void read_shader_and_lighting(const SceneReader& reader, const json& document, Scene& scene) {
+    const json::json_pointer root;
     if (const json* shader = reader.optional_field(document, root, "shader")) {
         try {
             scene.shader = parse_shader(reader.string(*shader, root / "shader"));
@@ -261,10 +263,30 @@ SceneFile parse_scene_json(const std::string& text, const std::string& name, con
             reader.fail(root / "lighting", error.what());
         }
     }
+}
+
+}  // namespace
+
+SceneFile parse_scene_json(const std::string& text, const std::string& name, const std::string& folder) {
+    const SceneReader reader(name);
+    const json document = parse_or_explain(text, name);
+    const json::json_pointer root;
+    reader.require_object(document, root);
+
+    SceneFile result;
+    reader.warn_unknown(document, root,
+                        {"mesh", "camera", "image", "material", "ambient", "lights", "shader", "lighting"},
+                        &result.warnings);
+    read_mesh_path(reader, document, folder, result);
+    read_camera(reader, document, result);
+    read_image(reader, document, result);
+    read_material(reader, document, result);
+    read_lights(reader, document, result);
+    read_shader_and_lighting(reader, document, result.scene);
 
     // The camera's geometric conditions (eye == lookat, up parallel to the view).
     try {
-        make_camera_frame(scene.camera, scene.image.rows, scene.image.columns);
+        make_camera_frame(result.scene.camera, result.scene.image.rows, result.scene.image.columns);
     } catch (const std::invalid_argument& error) {
         throw FileError(name + ": " + error.what());
     }

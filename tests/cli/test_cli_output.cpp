@@ -3,6 +3,7 @@
 // its figures, --repeat/--stats-json, and `generate`.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -126,6 +127,24 @@ TEST_CASE("options repeat K and stats-json report K timed runs and the render st
     CHECK(stats["stats"]["triangles_in"] == 1);
     CHECK(stats["stats"]["triangles_drawn"] == 1);
     CHECK(stats["scene"]["width"] == 8);
+    CHECK(stats["load_seconds"].get<double>() >= 0.0);
+    CHECK(stats["load_seconds"].get<double>() < 60.0);
+}
+
+TEST_CASE("a scene naming a PLY mesh, and a GLB given alone, render as their OBJ twin does") {
+    TemporaryFolder folder;
+    const Run obj = run_cli(folder, "render '" + data_folder + "/triangle.json' -o obj.png");
+    const Run ply = run_cli(folder, "render '" + data_folder + "/triangle_ply.json' -o ply.png");
+    REQUIRE(obj.status == 0);
+    REQUIRE(ply.status == 0);
+    CHECK(io::read_image(folder.file("ply.png")).pixels == io::read_image(folder.file("obj.png")).pixels);
+    const Run obj_alone = run_cli(folder, "render '" + data_folder + "/triangle.obj' --size 32x24 -o obj_alone.png");
+    const Run glb_alone = run_cli(folder, "render '" + data_folder + "/triangle.glb' --size 32x24 -o glb_alone.png");
+    REQUIRE(obj_alone.status == 0);
+    REQUIRE(glb_alone.status == 0);
+    const Image framed = io::read_image(folder.file("glb_alone.png"));
+    CHECK(framed.pixels == io::read_image(folder.file("obj_alone.png")).pixels);
+    CHECK(std::count(framed.pixels.begin(), framed.pixels.end(), glm::vec3(1.0f)) < 32 * 24);  // the triangle shows
 }
 
 TEST_CASE("sheet writes the 4x2 grid and, with --figures, the eight figures") {

@@ -1,4 +1,4 @@
-// Wavefront OBJ meshes in and out, as ../shared/scene-format.md ("mesh") reads them:
+// Wavefront OBJ meshes in and out, as docs/scene-format.md ("mesh") reads them:
 // `v x y z [r g b]` positions with optional colours in [0,1] (vertices without
 // a colour are white), faces of 3 or more vertices triangulated as a fan
 // (v0 v1 v2, v0 v2 v3, ...), negative (relative) indices, and the MTL
@@ -7,28 +7,21 @@
 #ifndef PHONGRAST_IO_OBJ_FILE_HPP
 #define PHONGRAST_IO_OBJ_FILE_HPP
 
-#include <optional>
 #include <string>
-#include <vector>
 
-#include "phongrast/lighting.hpp"
-#include "phongrast/mesh.hpp"
+#include "phongrast/io/mesh_file.hpp"
 
 namespace phongrast::io {
 
-struct ObjFile {
-    Mesh mesh;
-    /// The MTL material of the first face that names one (`usemtl`), if any.
-    std::optional<PhongMaterial> material;
-    std::string material_name;  ///< its name, for messages
-    /// Problems that do not stop the load (e.g. an MTL file that is missing), one per line.
-    std::vector<std::string> warnings;
-};
+/// The OBJ reader's result: the mesh, the MTL material of the first face
+/// that names one (`usemtl`), and warnings.
+using ObjFile = MeshFile;
 
-/// Reads and validates an OBJ file. Throws FileError ("path:line: what was
-/// expected") for: a missing or unreadable file, a non-numeric or non-finite
-/// coordinate, a face with fewer than 3 vertices, a zero or out-of-range
-/// index, and a file without any face.
+/// Reads and validates an OBJ file in one pass, in parallel over chunks of
+/// large files; coordinates are the file's decimal values correctly rounded to
+/// double. Throws FileError ("path:line: what was expected") for: a missing or
+/// unreadable file, a non-numeric or non-finite coordinate, a face with fewer
+/// than 3 vertices, a zero or out-of-range index, and a file without any face.
 ObjFile read_obj(const std::string& path);
 
 /// Writes positions (with `significant_digits`, 17 keeps every double exactly),

@@ -1,4 +1,4 @@
-// Scene files (../shared/scene-format.md, contract version 1) read with
+// Scene files (docs/scene-format.md, contract version 1) read with
 // nlohmann-json, and written back for the user to copy.
 //
 // Required: "mesh" (unless the caller supplies one, e.g. `--mesh`),

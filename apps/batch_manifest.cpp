@@ -1,0 +1,286 @@
+#include "batch_manifest.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "command_line.hpp"
+#include "phongrast/io/error.hpp"
+#include "phongrast/io/image_file.hpp"
+#include "phongrast/lighting.hpp"
+#include "phongrast/render.hpp"
+
+namespace phongrast::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr int max_views = 100000;
+
+std::string describe(const json& value) {
+    if (value.is_string()) return "the string " + value.dump();
+    if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+    if (value.is_null()) return "null";
+    if (value.is_array()) return "an array";
+    if (value.is_object()) return "an object";
+    return value.dump();
+}
+
+/// Reads the fields of one manifest line; every message names the line and the field.
+class LineReader {
+public:
+    LineReader(const std::string& name, int line, const json& object) : object_(object) {
+        where_ = name + ":" + std::to_string(line);
+    }
+
+    [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+        throw io::FileError(where_ + ": " + (field.empty() ? "" : "/" + field + ": ") + what);
+    }
+
+    const json* find(const char* field) const {
+        const auto it = object_.find(field);
+        return it == object_.end() ? nullptr : &*it;
+    }
+
+    std::string text(const char* field) const {
+        const json* value = find(field);
+        if (value == nullptr) return "";
+        if (!value->is_string() || value->get<std::string>().empty()) {
+            fail(field, "expected a non-empty string, got " + describe(*value));
+        }
+        return value->get<std::string>();
+    }
+
+    std::optional<int> whole_number(const char* field, int low, int high) const {
+        const json* value = find(field);
+        if (value == nullptr) return std::nullopt;
+        if (!value->is_number_integer() || value->get<long long>() < low || value->get<long long>() > high) {
+            fail(field, "expected a whole number from " + std::to_string(low) + " to " + std::to_string(high) +
+                            ", got " + describe(*value));
+        }
+        return static_cast<int>(value->get<long long>());
+    }
+
+    std::optional<double> number(const char* field) const {
+        const json* value = find(field);
+        if (value == nullptr) return std::nullopt;
+        if (!value->is_number()) fail(field, "expected a number, got " + describe(*value));
+        return value->get<double>();
+    }
+
+    void reject_unknown_fields() const {
+        static const std::set<std::string> known = {"scene", "mesh",    "views", "elevation", "shader",
+                                                    "lighting", "size", "samples", "mode",  "output"};
+        for (auto it = object_.begin(); it != object_.end(); ++it) {
+            if (known.count(it.key()) == 0) {
+                fail(it.key(), "unknown field; expected scene, mesh, views, elevation, shader, lighting, size, "
+                               "samples, mode or output");
+            }
+        }
+    }
+
+private:
+    const json& object_;
+    std::string where_;
+};
+
+JobSettings read_settings(const LineReader& reader, const JobSettings& defaults) {
+    JobSettings settings = defaults;
+    if (const std::string shader = reader.text("shader"); !shader.empty()) settings.shader = shader;
+    if (const std::string lighting = reader.text("lighting"); !lighting.empty()) settings.lighting = lighting;
+    if (const std::string size = reader.text("size"); !size.empty()) settings.size = size;
+    if (const std::string mode = reader.text("mode"); !mode.empty()) settings.mode = mode;
+    if (const std::optional<int> samples = reader.whole_number("samples", 1, 16)) settings.samples = samples;
+    // Names are checked now, so that a typo stops the whole batch before it starts.
+    try {
+        if (!settings.shader.empty()) parse_shader(settings.shader);
+    } catch (const std::invalid_argument& error) {
+        reader.fail("shader", error.what());
+    }
+    try {
+        if (!settings.lighting.empty()) parse_lighting(settings.lighting);
+    } catch (const std::invalid_argument& error) {
+        reader.fail("lighting", error.what());
+    }
+    try {
+        if (!settings.size.empty()) parse_size(settings.size);
+    } catch (const std::invalid_argument&) {
+        reader.fail("size", "expected \"WxH\" with whole numbers from 1 to 32768, e.g. \"640x480\"; got \"" +
+                                settings.size + "\"");
+    }
+    if (!settings.mode.empty() && settings.mode != "exact" && settings.mode != "seed") {
+        reader.fail("mode", "expected \"exact\" or \"seed\", got \"" + settings.mode + "\"");
+    }
+    return settings;
+}
+
+void read_source(const LineReader& reader, const json& object, const std::string& folder, BatchJob& job) {
+    const json* scene = reader.find("scene");
+    const json* mesh = reader.find("mesh");
+    if ((scene == nullptr) == (mesh == nullptr)) {
+        reader.fail("", scene ? "both \"scene\" and \"mesh\"; expected one of them"
+                              : "expected \"scene\" (a scene file or an inline scene) or \"mesh\" (an OBJ file)");
+    }
+    if (scene != nullptr && scene->is_object()) {
+        job.kind = JobKind::inline_scene;
+        job.scene_json = scene->dump();
+        job.folder = folder;
+    } else if (scene != nullptr) {
+        job.kind = JobKind::scene_file;
+        job.path = (fs::path(folder) / reader.text("scene")).lexically_normal().string();
+    } else {
+        job.kind = JobKind::mesh;
+        job.path = (fs::path(folder) / reader.text("mesh")).lexically_normal().string();
+    }
+    const bool turntable = job.kind == JobKind::mesh;
+    for (const char* field : {"views", "elevation"}) {
+        if (!turntable && object.contains(field)) reader.fail(field, "only a \"mesh\" job has views");
+    }
+    job.views = reader.whole_number("views", 1, max_views).value_or(1);
+    job.elevation = reader.number("elevation").value_or(0.0);
+    if (!(job.elevation > -90.0 && job.elevation < 90.0)) {
+        reader.fail("elevation", "expected degrees between -90 and 90 (exclusive), got " + object["elevation"].dump());
+    }
+}
+
+std::string default_pattern(const BatchJob& job) {
+    return job.kind == JobKind::mesh && job.views > 1 ? "{name}-{view}.png" : "{name}.png";
+}
+
+std::string name_of(const BatchJob& job) {
+    if (job.kind == JobKind::inline_scene) return "line-" + std::to_string(job.line);
+    return fs::path(job.path).stem().string();
+}
+
+void read_outputs(const LineReader& reader, BatchJob& job) {
+    std::string pattern = reader.text("output");
+    if (pattern.empty()) pattern = default_pattern(job);
+    for (int view = 0; view < job.views; ++view) {
+        std::string output;
+        try {
+            output = expand_output_pattern(pattern, name_of(job), job.line, view, job.views);
+            io::image_format_for(output);
+        } catch (const std::exception& error) {
+            reader.fail("output", error.what());
+        }
+        const fs::path path = fs::path(output).lexically_normal();
+        bool climbs = path.is_absolute();
+        for (const fs::path& part : path) climbs = climbs || part == "..";
+        if (climbs) reader.fail("output", "'" + output + "' must stay inside the output folder (relative, no '..')");
+        job.outputs.push_back(path.string());
+    }
+}
+
+BatchJob parse_line(const std::string& text, const std::string& name, int line, const std::string& folder,
+                    const JobSettings& defaults) {
+    json object;
+    try {
+        object = json::parse(text);
+    } catch (const json::parse_error& error) {
+        const std::string detail = error.what();
+        const std::size_t colon = detail.find(": ");
+        throw io::FileError(name + ":" + std::to_string(line) + ":" + std::to_string(error.byte) +
+                            ": malformed JSON: " + (colon == std::string::npos ? detail : detail.substr(colon + 2)));
+    }
+    const LineReader reader(name, line, object);
+    if (!object.is_object()) reader.fail("", "expected a JSON object (one job per line), got " + describe(object));
+    reader.reject_unknown_fields();
+    BatchJob job;
+    job.line = line;
+    read_source(reader, object, folder, job);
+    job.settings = read_settings(reader, defaults);
+    read_outputs(reader, job);
+    return job;
+}
+
+}  // namespace
+
+std::string expand_output_pattern(const std::string& pattern, const std::string& name, int line, int view,
+                                  int views) {
+    const int view_digits = static_cast<int>(std::to_string(std::max(0, views - 1)).size());
+    std::string result;
+    for (std::size_t i = 0; i < pattern.size(); ++i) {
+        if (pattern[i] != '{') {
+            result += pattern[i];
+            continue;
+        }
+        const std::size_t close = pattern.find('}', i);
+        if (close == std::string::npos) throw std::invalid_argument("'{' without '}' in \"" + pattern + "\"");
+        const std::string key = pattern.substr(i + 1, close - i - 1);
+        int width = view_digits;
+        if (key == "name") {
+            result += name;
+        } else if (key == "line") {
+            result += std::to_string(line);
+        } else if (key == "view" || (key.rfind("view:", 0) == 0 && key.size() == 6 && std::isdigit(static_cast<unsigned char>(key[5])))) {
+            if (key.size() == 6) width = key[5] - '0';
+            const std::string digits = std::to_string(view);
+            result += std::string(static_cast<std::size_t>(std::max(0, width - static_cast<int>(digits.size()))), '0');
+            result += digits;
+        } else {
+            throw std::invalid_argument("unknown placeholder {" + key + "} in \"" + pattern +
+                                        "\"; expected {name}, {line}, {view} or {view:N}");
+        }
+        i = close;
+    }
+    return result;
+}
+
+Manifest parse_manifest(const std::string& text, const std::string& name, const std::string& folder,
+                        const JobSettings& defaults) {
+    Manifest manifest;
+    manifest.path = name;
+    manifest.folder = folder;
+    std::map<std::string, int> writer_of;  // output -> line, to find two jobs writing one image
+    int line = 0;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string content = text.substr(start, end - start);
+        start = end + 1;
+        ++line;
+        if (content.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank lines are allowed
+        BatchJob job = parse_line(content, name, line, folder, defaults);
+        for (const std::string& output : job.outputs) {
+            const auto [it, inserted] = writer_of.emplace(output, line);
+            if (!inserted) {
+                throw io::FileError(name + ":" + std::to_string(line) + ": /output: '" + output +
+                                    "' is also written by line " + std::to_string(it->second) +
+                                    (it->second == line ? " (add {view} to the pattern)" : "") +
+                                    "; every image needs its own name");
+            }
+        }
+        manifest.jobs.push_back(std::move(job));
+    }
+    return manifest;
+}
+
+bool outputs_exist(const BatchJob& job, const std::string& output_folder) {
+    std::error_code error;
+    for (const std::string& output : job.outputs) {
+        if (!fs::is_regular_file(fs::path(output_folder) / output, error)) return false;
+    }
+    return true;
+}
+
+Manifest read_manifest(const std::string& path, const JobSettings& defaults) {
+    std::error_code error;
+    if (fs::is_directory(path, error)) throw io::FileError(path + ": is a folder; expected a manifest (JSON Lines)");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw io::FileError(path + ": manifest not found or unreadable");
+    std::ostringstream text;
+    text << in.rdbuf();
+    const std::string folder = fs::path(path).has_parent_path() ? fs::path(path).parent_path().string() : ".";
+    return parse_manifest(text.str(), path, folder, defaults);
+}
+
+}  // namespace phongrast::cli

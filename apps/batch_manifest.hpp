@@ -1,0 +1,78 @@
+// The manifest of `phongrast batch`: JSON Lines, one job per line.
+//
+//   {"scene": "figures/knot.json"}                          a scene file
+//   {"scene": {"mesh": "knot.obj", "camera": {...}, ...}}   a scene written inline
+//   {"mesh": "chair.obj", "views": 24, "elevation": 20}     a turntable around the framed mesh
+//
+// Optional on every line: "shader", "lighting", "size" ("WxH"), "samples",
+// "mode" ("exact" or "seed") and "output", a name pattern relative to the
+// output folder with {name} (the scene's or mesh's file stem, "line-N" for an
+// inline scene), {line} and {view} (zero-padded to the width of the last view
+// number; {view:N} pads to N digits). The pattern's extension chooses PNG or
+// EXR. Relative paths resolve against the manifest's folder (a scene file's
+// own "mesh" against the scene file's folder, as for `render`).
+//
+// Every line is checked before anything is rendered: a malformed line, a field
+// of the wrong type or value, an unknown field (a typo would otherwise waste a
+// whole cluster run) or two jobs writing the same image is an io::FileError
+// naming the manifest, the line and the field. Files the jobs name are only
+// read when the job runs: a missing or bad mesh fails that job alone.
+#ifndef PHONGRAST_APPS_BATCH_MANIFEST_HPP
+#define PHONGRAST_APPS_BATCH_MANIFEST_HPP
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace phongrast::cli {
+
+/// Settings a manifest line (or the command line, for every job) may override.
+/// Empty / unset: the scene file's value, or the automatic framing's.
+struct JobSettings {
+    std::string shader;
+    std::string lighting;
+    std::string size;  ///< "WxH"
+    std::optional<int> samples;
+    std::string mode;  ///< "exact" or "seed"
+};
+
+enum class JobKind { scene_file, inline_scene, mesh };
+
+struct BatchJob {
+    int line = 0;  ///< 1-based line of the manifest
+    JobKind kind = JobKind::scene_file;
+    std::string path;         ///< scene file or mesh, resolved against the manifest's folder
+    std::string scene_json;   ///< inline_scene: the scene object as JSON text
+    std::string folder;       ///< the manifest's folder: an inline scene's "mesh" is relative to it
+    int views = 1;            ///< mesh: views around the vertical axis, 360 / views degrees apart
+    double elevation = 0.0;   ///< mesh: degrees above the horizontal, in (-90, 90)
+    JobSettings settings;     ///< the line's fields over the command line's
+    std::vector<std::string> outputs;  ///< one per view, relative to the output folder
+};
+
+struct Manifest {
+    std::string path;
+    std::string folder;  ///< where relative paths start
+    std::vector<BatchJob> jobs;
+};
+
+/// Reads and checks a manifest file. `defaults` (from the command line) fill
+/// the settings a line leaves out. Throws io::FileError (exit status 2).
+Manifest read_manifest(const std::string& path, const JobSettings& defaults);
+
+/// The same from text; `name` is used in messages, `folder` to resolve paths.
+Manifest parse_manifest(const std::string& text, const std::string& name, const std::string& folder,
+                        const JobSettings& defaults);
+
+/// True when every image of `job` exists in `output_folder`. Images are
+/// renamed into place whole, so an existing image is a complete one.
+bool outputs_exist(const BatchJob& job, const std::string& output_folder);
+
+/// Expands an output pattern for one view. Throws std::invalid_argument
+/// describing a bad placeholder.
+std::string expand_output_pattern(const std::string& pattern, const std::string& name, int line, int view,
+                                  int views);
+
+}  // namespace phongrast::cli
+
+#endif  // PHONGRAST_APPS_BATCH_MANIFEST_HPP

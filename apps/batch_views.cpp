@@ -1,0 +1,115 @@
+#include "batch_views.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "phongrast/camera.hpp"
+#include "phongrast/io/scene_file.hpp"
+
+namespace phongrast::cli {
+namespace {
+
+/// Tilts v up by `elevation` (about the x axis), then turns it by `azimuth`
+/// about the y axis. Angles of 0 leave v exactly as it is.
+glm::dvec3 turn(const glm::dvec3& v, double azimuth, double elevation) {
+    const double ce = std::cos(elevation), se = std::sin(elevation);
+    const double ca = std::cos(azimuth), sa = std::sin(azimuth);
+    const glm::dvec3 tilted(v.x, v.y * ce + v.z * se, -v.y * se + v.z * ce);
+    return {tilted.x * ca + tilted.z * sa, tilted.y, -tilted.x * sa + tilted.z * ca};
+}
+
+/// Half width and half height on the image plane that every vertex needs from `camera`.
+std::pair<double, double> half_extent(const Mesh& mesh, const Camera& camera, int rows, int columns) {
+    const CameraFrame frame = make_camera_frame(camera, rows, columns);
+    double half_width = 0.0;
+    double half_height = 0.0;
+    for (const glm::dvec3& p : mesh.positions) {
+        const glm::dvec3 c = frame.camera_from_world(p);
+        if (!(c.z > 0.0)) continue;  // the eye is 2.5 diagonals from the centre: cannot happen
+        half_width = std::max(half_width, std::abs(camera.focal * c.x / c.z));
+        half_height = std::max(half_height, std::abs(camera.focal * c.y / c.z));
+    }
+    return {half_width, half_height};
+}
+
+}  // namespace
+
+void make_turntable(const Scene& framed, int views, double elevation_degrees, JobScenes& scenes) {
+    scenes.cameras.assign(1, framed.camera);
+    scenes.lights.assign(1, framed.lights);
+    if (views == 1 && elevation_degrees == 0.0) return;  // render's own framing, untouched
+
+    const double pi = std::acos(-1.0);
+    const double elevation = elevation_degrees * pi / 180.0;
+    const glm::dvec3 centre = framed.camera.lookat;
+    const int rows = framed.image.rows;
+    const int columns = framed.image.columns;
+    scenes.cameras.clear();
+    scenes.lights.clear();
+    double half_width = 0.0;
+    double half_height = 0.0;
+    for (int view = 0; view < views; ++view) {
+        const double azimuth = 2.0 * pi * view / views;
+        Camera camera = framed.camera;
+        camera.eye = centre + turn(framed.camera.eye - centre, azimuth, elevation);
+        std::vector<PointLight> lights = framed.lights;
+        for (PointLight& light : lights) light.position = centre + turn(light.position - centre, azimuth, elevation);
+        const auto [width, height] = half_extent(framed.mesh, camera, rows, columns);
+        half_width = std::max(half_width, width);
+        half_height = std::max(half_height, height);
+        scenes.cameras.push_back(camera);
+        scenes.lights.push_back(std::move(lights));
+    }
+    const double aspect = static_cast<double>(columns) / static_cast<double>(rows);
+    const double sensor_height = 2.2 * std::max(half_height, half_width / aspect);
+    if (!(sensor_height > 0.0)) return;  // a single point: keep the framing's sensor
+    for (Camera& camera : scenes.cameras) {
+        camera.sensor_height = sensor_height;
+        camera.sensor_width = sensor_height * aspect;
+    }
+}
+
+io::MeshFile LastMesh::read(const std::string& path) {
+    std::error_code error;
+    const auto bytes = std::filesystem::file_size(path, error);
+    const auto modified = std::filesystem::last_write_time(path, error);
+    const std::string key = error ? "" : path + "|" + std::to_string(bytes) + "|" +
+                                             std::to_string(modified.time_since_epoch().count());
+    if (key.empty() || key != key_ || !mesh_) {
+        mesh_.reset();
+        mesh_ = io::read_mesh(path);  // throws for a bad file: nothing is kept
+        key_ = key;
+    }
+    return *mesh_;
+}
+
+JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes) {
+    SceneFlags flags;
+    flags.input = job.kind == JobKind::inline_scene ? "" : job.path;
+    flags.shader = job.settings.shader;
+    flags.lighting = job.settings.lighting;
+    flags.size = job.settings.size;
+    flags.mode = job.settings.mode.empty() ? "exact" : job.settings.mode;
+    flags.samples = job.settings.samples.value_or(1);
+    flags.threads = threads;
+    if (meshes != nullptr) flags.read_mesh = [meshes](const std::string& path) { return meshes->read(path); };
+    const Messages silent(true);  // notes for thousands of jobs would drown the progress; errors go to the log
+
+    JobScenes scenes;
+    if (job.kind == JobKind::inline_scene) {
+        const std::string name = "line " + std::to_string(job.line) + " /scene";
+        scenes.prepared = prepare_parsed_scene(io::parse_scene_json(job.scene_json, name, job.folder), name, flags, silent);
+    } else {
+        scenes.prepared = prepare_scene(flags, silent);
+    }
+    if (job.kind == JobKind::mesh) {
+        make_turntable(scenes.prepared.scene, job.views, job.elevation, scenes);
+    } else {
+        scenes.cameras.assign(1, scenes.prepared.scene.camera);
+        scenes.lights.assign(1, scenes.prepared.scene.lights);
+    }
+    return scenes;
+}
+
+}  // namespace phongrast::cli

@@ -1,0 +1,145 @@
+#include "batch_worker.hpp"
+
+#include <cerrno>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "batch_queue.hpp"
+#include "batch_views.hpp"
+#include "phongrast/io/image_file.hpp"
+
+namespace phongrast::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Whole lines to the supervisor; the renderer and writer threads both report.
+class Reporter {
+public:
+    explicit Reporter(int descriptor) : descriptor_(descriptor) {}
+
+    void send(const nlohmann::json& message) {
+        const std::string line = message.dump() + "\n";
+        std::lock_guard<std::mutex> lock(mutex_);
+        std::size_t sent = 0;
+        while (sent < line.size()) {
+            const ssize_t written = ::write(descriptor_, line.data() + sent, line.size() - sent);
+            if (written < 0 && errno == EINTR) continue;
+            if (written <= 0) _exit(3);  // the supervisor is gone: nobody would record the work
+            sent += static_cast<std::size_t>(written);
+        }
+    }
+
+private:
+    int descriptor_;
+    std::mutex mutex_;
+};
+
+struct LoadedJob {
+    std::unique_ptr<JobScenes> scenes;  ///< null when loading failed
+    std::string error;
+};
+
+/// One image to write, or (image empty) the end of job `position`.
+struct WriteItem {
+    std::size_t position = 0;
+    std::optional<Image> image;
+    std::string path;
+    std::string error;            ///< end of job: why it failed, if it did before writing
+    double render_seconds = 0.0;  ///< end of job: its views' render time
+};
+
+void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, int threads,
+                BoundedQueue<LoadedJob>& loaded) {
+    LastMesh meshes;
+    for (std::size_t position = first; position < jobs.size(); ++position) {
+        LoadedJob job;
+        try {
+            job.scenes = std::make_unique<JobScenes>(load_job(*jobs[position], threads, &meshes));
+        } catch (const std::exception& error) {
+            job.error = error.what();
+        }
+        loaded.push(std::move(job));
+    }
+}
+
+void write_images(std::size_t count, BoundedQueue<WriteItem>& pending, Reporter& reporter) {
+    std::string error;  // of the job being written
+    for (std::size_t finished = 0; finished < count;) {
+        WriteItem item = pending.pop();
+        if (item.image) {
+            if (!error.empty()) continue;  // the job already failed: its other views are moot
+            try {
+                const fs::path folder = fs::path(item.path).parent_path();
+                if (!folder.empty()) fs::create_directories(folder);
+                io::write_image(*item.image, item.path);
+            } catch (const std::exception& failure) {
+                error = failure.what();
+            }
+            continue;
+        }
+        if (error.empty()) error = item.error;
+        nlohmann::json message = {{"finished", item.position},
+                                  {"status", error.empty() ? "done" : "failed"},
+                                  {"render_seconds", item.render_seconds}};
+        if (!error.empty()) message["error"] = error;
+        reporter.send(message);
+        error.clear();
+        ++finished;
+    }
+}
+
+/// Renders every view of one loaded job and queues its images, then its end.
+void render_job(Renderer& renderer, std::size_t position, const BatchJob& job, LoadedJob& loaded,
+                const std::string& output_folder, BoundedQueue<WriteItem>& pending) {
+    WriteItem end;
+    end.position = position;
+    end.error = loaded.error;
+    if (loaded.scenes) {
+        JobScenes& scenes = *loaded.scenes;
+        renderer.set_options(scenes.prepared.options);
+        try {
+            for (std::size_t view = 0; view < scenes.cameras.size(); ++view) {
+                scenes.prepared.scene.camera = scenes.cameras[view];
+                scenes.prepared.scene.lights = scenes.lights[view];
+                const RenderResult& result = renderer.render(scenes.prepared.scene);
+                end.render_seconds += result.stats.seconds;
+                WriteItem image;
+                image.position = position;
+                image.image = result.image;
+                image.path = (fs::path(output_folder) / job.outputs[view]).string();
+                pending.push(std::move(image));
+            }
+        } catch (const std::exception& error) {
+            end.error = error.what();
+        }
+    }
+    pending.push(std::move(end));
+}
+
+}  // namespace
+
+void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, const std::string& output_folder,
+                int threads, int report_fd) {
+    Reporter reporter(report_fd);
+    BoundedQueue<LoadedJob> loaded(2);
+    BoundedQueue<WriteItem> pending(4);
+    std::thread loader([&] { load_ahead(jobs, first, threads, loaded); });
+    std::thread writer([&] { write_images(jobs.size() - first, pending, reporter); });
+    Renderer renderer;
+    for (std::size_t position = first; position < jobs.size(); ++position) {
+        reporter.send({{"start", position}});
+        LoadedJob job = loaded.pop();
+        render_job(renderer, position, *jobs[position], job, output_folder, pending);
+    }
+    loader.join();
+    writer.join();
+}
+
+}  // namespace phongrast::cli

@@ -1,0 +1,225 @@
+#!/usr/bin/env bash
+# Builds and runs phongrast's benchmarks, one subcommand per measurement; the
+# tables are Markdown, made by bench/report.py, ready for docs/.
+#
+#   bench/run.sh effects [--quick] [--callgrind] [Google Benchmark flags]
+#                                                             docs/performance.md: effect sets, lights, culling
+#   bench/run.sh speed [--quick] [--steps] [--callgrind]      docs/performance.md: medians and peak memory per scene
+#   bench/run.sh scaling [--quick | --full]                   docs/performance.md: time against triangles and pixels
+#   bench/run.sh accuracy [--quick] [phongrast_accuracy flags] docs/accuracy.md (plots into docs/images/)
+#   bench/run.sh llvmpipe [--quick] [bench_llvmpipe flags]    docs/llvmpipe.md: times and image agreement
+#   bench/run.sh all [--quick]                                llvmpipe, speed --steps and scaling in one report
+#
+# --quick runs a small subset of each, in seconds to a few minutes, to check
+# that everything works; its numbers are not for the docs.
+# Environment: BUILD_DIR (default build/bench-release), REPEAT (timed rounds, default 5).
+# Needs the packages of cmake/debian-packages.txt (Google Benchmark; OSMesa for
+# llvmpipe) and Debian's /usr/bin/python3; --callgrind also needs valgrind
+# (apt-get install valgrind: a measuring tool, not in the package list).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+build="${BUILD_DIR:-build/bench-release}"
+repeat="${REPEAT:-5}"
+python=/usr/bin/python3
+[ -x "$python" ] || python=python3
+
+usage() {
+  sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//' >&2
+  exit 2
+}
+
+# need_valgrind: --callgrind without valgrind is an error, not an empty table.
+need_valgrind() {
+  command -v valgrind >/dev/null || { echo "run.sh: --callgrind needs valgrind (apt-get install valgrind)" >&2; exit 1; }
+}
+
+# build TARGET...: configures once (Release, benchmarks on, warnings as errors) and builds only these targets.
+build() {
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DPHONGRAST_WERROR=ON -DPHONGRAST_BUILD_BENCH=ON \
+      -DPHONGRAST_BUILD_TESTS=OFF -DPHONGRAST_BUILD_APPS=OFF -DPHONGRAST_INSTALL=OFF >/dev/null
+  fi
+  if ! cmake --build "$build" -j2 --target "$@" >"$build/build.log" 2>&1; then
+    tail -n 30 "$build/build.log" >&2
+    echo "run.sh: building $* failed (Google Benchmark: libbenchmark-dev; OSMesa: libosmesa6-dev)" >&2
+    exit 1
+  fi
+}
+
+# What was measured, where and when.
+header() {
+  echo "- command: \`bench/run.sh $*\` (REPEAT=$repeat)"
+  echo "- date: $(date -u '+%Y-%m-%d %H:%M UTC'); machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
+  echo "- commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src include 2>/dev/null || echo ' (+ uncommitted changes in src/ or include/)')"
+  echo "- load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo
+}
+
+effects() {
+  local given="$*" repetitions=5 min_time=0.1 callgrind=0 flags=()
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --quick) repetitions=2 min_time=0.01 flags+=(--benchmark_filter='mesh=icosphere-1k/.*/threads=1') ;;
+      --callgrind) need_valgrind; callgrind=1 ;;
+      *) flags+=("$1") ;;
+    esac
+    shift
+  done
+  build bench_effects bench_effects_once
+  header effects "$given"
+  local json="$build/effects.json"
+  "$build/bench/bench_effects" --benchmark_repetitions="$repetitions" --benchmark_report_aggregates_only=true \
+    --benchmark_min_time="$min_time" --benchmark_out="$json" --benchmark_out_format=json "${flags[@]}" \
+    2>"$build/effects.stderr" >/dev/null
+  local notes=()
+  mapfile -t notes < <(sed -n 's/^bench_effects: //p' "$build/effects.stderr")
+  "$python" bench/report.py effects "$json" "${notes[@]}"
+  echo
+  echo "By CPU time of the rendering thread (1-thread runs):"
+  echo
+  "$python" bench/report.py effects --clock=cpu "$json" "${notes[@]}"
+  if [ "$callgrind" = 1 ]; then
+    echo
+    "$python" bench/report.py callgrind "$build/bench/bench_effects_once"
+  fi
+}
+
+# One bench_speed_once line -> "median | RSS".
+speed_fields() { sed -n 's/.*median \([0-9.]*\) ms.*peak RSS \([0-9.]*\) MiB.*/\1 | \2/p'; }
+
+speed() {
+  local scenes="icosphere-9.7k suzanne spot armadillo icosphere-1.3M" steps=0 callgrind=0
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --quick) scenes="icosphere-9.7k spot"; repeat=3 ;;
+      --steps) steps=1 ;;
+      --callgrind) need_valgrind; callgrind=1 ;;
+      *) echo "run.sh speed: unknown argument $1" >&2; exit 2 ;;
+    esac
+    shift
+  done
+  build bench_speed_once
+  local bin="$build/bench/bench_speed_once"
+  if [ "$steps" = 1 ]; then
+    echo "Medians in ms of $repeat interleaved rounds after one warm-up. A: every layer shaded, baseline (SSE2)"
+    echo "kernels; B: Overdraw::automatic, baseline kernels; C: automatic, AVX2 kernels (when the CPU has AVX2)."
+    echo
+    echo "| scene | shader | mode | threads | A ms | B ms | C ms | B / A | C / A | samples shaded A / C |"
+    echo "|---|---|---|---:|---:|---:|---:|---:|---:|---|"
+  else
+    echo "| scene | shader | mode | threads | ms (median of $repeat) | peak RSS MiB |"
+    echo "|---|---|---|---:|---:|---:|"
+  fi
+  for scene in $scenes; do
+    local k=$repeat
+    [ "$scene" = icosphere-1.3M ] && [ "$steps" = 0 ] && k=3
+    for shader in gouraud phong; do
+      for mode in exact seed; do
+        for threads in 1 2; do
+          local args=(--scene "$scene" --shader "$shader" --mode "$mode" --threads "$threads" --repeat "$k")
+          if [ "$steps" = 1 ]; then
+            "$bin" "${args[@]}" --steps 2>/dev/null || echo "| $scene | $shader | $mode | $threads | (skipped: mesh not found) |"
+          elif line=$("$bin" "${args[@]}" 2>/dev/null); then
+            echo "| $scene | $shader | $mode | $threads | $(echo "$line" | speed_fields) |"
+          else
+            echo "| $scene | $shader | $mode | $threads | (skipped: mesh not found) | |"
+          fi
+        done
+      done
+    done
+  done
+  if [ "$callgrind" = 1 ]; then
+    echo
+    echo "Millions of instructions inside the render pipeline, one 1-thread render (valgrind --tool=callgrind):"
+    echo
+    echo "| scene | shader | Mi |"
+    echo "|---|---|---:|"
+    for scene in icosphere-9.7k suzanne; do
+      for shader in gouraud phong; do
+        local n
+        n=$("$python" bench/report.py instructions "$bin" --scene "$scene" --shader "$shader" --repeat 1 --warmup 0)
+        echo "| $scene | $shader | $(awk -v n="$n" 'BEGIN { printf "%.2f", n / 1e6 }') |"
+      done
+    done
+  fi
+}
+
+scaling() {
+  local grid=--quick
+  case "${1:-}" in
+    --full) grid="" ;;
+    --quick | "") ;;
+    *) echo "run.sh scaling: unknown argument $1 (expected --quick or --full)" >&2; exit 2 ;;
+  esac
+  build bench_scaling
+  "$build/bench/bench_scaling" $grid --benchmark_out="$build/scaling.json" --benchmark_out_format=json >/dev/null
+  "$python" bench/report.py scaling "$build/scaling.json"
+}
+
+accuracy() {
+  local given="$*" args=(--images docs/images)
+  if [ "${1:-}" = --quick ]; then
+    shift
+    args=(--images "$build/accuracy-report" --scenes sphere,overlap --runs 1)
+  fi
+  build phongrast_accuracy
+  header accuracy "$given"
+  "$build/bench/accuracy/phongrast_accuracy" --out "$build/accuracy-report" "${args[@]}" "$@"
+  echo "- load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "- tables: $build/accuracy-report/accuracy_tables.md; plots and heat maps: ${args[1]}"
+}
+
+# llvmpipe reads LP_NUM_THREADS only when its first context is created, so each thread count is its own process.
+llvmpipe() {
+  local args=(--repeat "$repeat")
+  if [ "${1:-}" = --quick ]; then
+    shift
+    args=(--repeat 1 --no-large --no-assets)
+  fi
+  build bench_llvmpipe
+  local bin="$build/bench/llvmpipe/bench_llvmpipe" one="$build/llvmpipe-1-thread.txt" two="$build/llvmpipe-2-threads.txt"
+  "$bin" --threads 1 "${args[@]}" "$@" >"$one"
+  "$bin" --threads 2 --images "$build/llvmpipe-images" "${args[@]}" "$@" >"$two"
+  head -n 1 "$one"
+  head -n 1 "$two"
+  echo
+  "$python" bench/report.py llvmpipe "$one" "$two"
+  echo
+  sed -n '/Image agreement/,$p' "$two"
+  echo
+  echo "Renders and difference heat maps: $build/llvmpipe-images"
+}
+
+all() {
+  local quick=""
+  [ "${1:-}" = --quick ] && quick=--quick
+  mkdir -p "$build"
+  {
+    echo "# phongrast speed report"
+    echo
+    header all $quick
+    echo "## 1. phongrast against llvmpipe"
+    echo
+    llvmpipe $quick
+    echo
+    echo "## 2. The speed steps, one process per row"
+    echo
+    speed --steps $quick
+    echo
+    echo "## 3. Scaling"
+    echo
+    scaling --quick
+    echo
+    echo "- load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+  } | tee "$build/report.md"
+  echo "report: $build/report.md" >&2
+}
+
+[ $# -ge 1 ] || usage
+command=$1
+shift
+case "$command" in
+  effects | speed | scaling | accuracy | llvmpipe | all) "$command" "$@" ;;
+  *) usage ;;
+esac

@@ -1,0 +1,44 @@
+// Binning (internal header): the draw triangles sorted into bands of rows,
+// painter's order kept within each band. Binning writes the Bins; the fill
+// only reads them, one band per task.
+#ifndef PHONGRAST_SRC_BINNING_HPP
+#define PHONGRAST_SRC_BINNING_HPP
+
+#include <cstdint>
+#include <vector>
+
+#include "fill_types.hpp"
+#include "triangle_setup.hpp"
+
+namespace phongrast::detail {
+
+/// Rows of samples per band: the unit of work of the fill.
+constexpr int kBandRows = 16;
+
+/// The draw triangles of each band of kBandRows sample rows, in painter's order.
+template <typename Real>
+struct Bins {
+    int bands = 0;
+    std::vector<std::uint32_t> band_start;          ///< bands + 1 offsets into `draws`
+    std::vector<const DrawTriangle<Real>*> draws;   ///< band after band
+
+    const DrawTriangle<Real>* const* band_draws(int band) const { return draws.data() + band_start[band]; }
+    std::uint32_t band_size(int band) const { return band_start[band + 1] - band_start[band]; }
+};
+
+/// bin_draws()'s scratch, kept from frame to frame.
+struct BinningMemory {
+    std::vector<std::uint32_t> chunk_band_count;   ///< per set-up chunk and band: draws it puts there
+    std::vector<std::uint32_t> chunk_band_cursor;  ///< per set-up chunk and band: where its next one goes
+};
+
+/// Bins the draw list of an image `rows` samples high. Counted and scattered
+/// in parallel over the set-up chunks (which are in painter's order), each
+/// chunk writing its own slice of every band: the same bins for any number
+/// of threads.
+template <typename Real>
+void bin_draws(const DrawList<Real>& draws, int rows, BinningMemory& memory, Bins<Real>& bins);
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_BINNING_HPP

@@ -1,0 +1,153 @@
+#include "fill_driver.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include <tbb/parallel_for.h>
+
+#include "prefetch.hpp"
+#include "term_counts.hpp"
+
+namespace phongrast::detail {
+namespace {
+
+/// Overdraw::automatic picks shade_visible only for per-sample lighting:
+/// there shading a sample costs several times the second coverage pass,
+/// while Gouraud's or flat's per-sample work (an interpolation, a store)
+/// costs about what the pass does (docs/performance.md, "Overdraw").
+bool overdraw_shades_visible_only(const Scene& scene, const RenderOptions& options, const EffectSet& effects) {
+    switch (options.overdraw) {
+        case Overdraw::shade_all: return false;
+        case Overdraw::shade_visible: return true;
+        case Overdraw::automatic: break;
+    }
+    // Decided by the scene alone, so the general kernel compares with the specialised ones like for like.
+    return scene.shader == Shader::phong && effects.normals;
+}
+
+/// Overdraw::shade_visible for one band: pass one records which of the
+/// band's triangles paints each sample last (painter's order: the last
+/// one to cover it); pass two shades, in the same order, only the
+/// triangles that own a sample, and of each only the samples it owns.
+/// Every sample gets the colour the classic fill leaves there, computed
+/// by the same kernel from the same weights, once.
+/// Returns the samples covered (pass one's count).
+template <typename Real>
+std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const DrawTriangle<Real>* const* draws,
+                                 std::uint32_t count, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
+                                 VisibleLayer& layer) {
+    const std::size_t samples = static_cast<std::size_t>(target.row_end - target.row_begin) *
+                                static_cast<std::size_t>(target.image.columns);
+    layer.owner.assign(samples, kNoOwner);
+    std::uint64_t covered = 0;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
+        covered += record_owner(*draws[i], target, i, layer.owner.data());
+    }
+    layer.shown.assign(count, 0);
+    for (const std::uint32_t owner : layer.owner) {
+        if (owner != kNoOwner) layer.shown[owner] = 1;
+    }
+    target.owner = layer.owner.data();
+    for (std::uint32_t i = 0; i < count; ++i) {
+        if (!layer.shown[i]) continue;  // entirely painted over: no shading at all
+        target.self = i;
+        plan.kernel(*draws[i], target, vectors, plan.setup);
+    }
+    return covered;
+}
+
+/// The classic painter's fill of one band: every triangle shades every
+/// sample it covers. Returns the samples covered.
+template <typename Real>
+std::uint64_t fill_every_layer(const FillPlan<Real>& plan, const DrawTriangle<Real>* const* draws, std::uint32_t count,
+                      FillTarget<Real>& target, LightVectorsAt<Real>& vectors) {
+    for (std::uint32_t i = 0; i < count; ++i) {
+        if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
+        plan.kernel(*draws[i], target, vectors, plan.setup);
+    }
+    return target.covered;
+}
+
+template <typename Real>
+void prepare_memory(const FillPlan<Real>& plan, int bands, std::size_t samples, FillMemory<Real>& memory) {
+    memory.depth_buffer.assign(plan.depth_test ? samples : 0, std::numeric_limits<Real>::infinity());
+    memory.shaded.assign(bands, 0);
+    memory.replaced.assign(bands, 0);
+    memory.covered.assign(bands, 0);
+    if (memory.band_vectors.size() < static_cast<std::size_t>(bands)) memory.band_vectors.resize(bands);
+    if (plan.shade_visible_only && memory.band_layers.size() < static_cast<std::size_t>(bands)) {
+        memory.band_layers.resize(bands);
+    }
+}
+
+}  // namespace
+
+template <typename Real>
+FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const EffectSet& effects,
+                         const LightRig<Real>& rig) {
+    FillPlan<Real> plan;
+    const std::vector<glm::vec3>& colors = scene.mesh.colors;
+    plan.setup.rig = &rig;
+    plan.setup.uniform_color = !effects.varying_colors;
+    plan.setup.color = colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[0]);
+    KernelChoice choice;
+    choice.phong = scene.shader == Shader::phong;
+    choice.flat = scene.shader == Shader::flat;
+    choice.perspective = options.interpolation == Interpolation::perspective_correct;
+    choice.specialized = options.specialize_effects;
+    choice.per_sample_vectors = options.light_vectors == LightVectors::shaded_point;
+    choice.uniform_color = plan.setup.uniform_color;
+    choice.effects = effects;
+    plan.kernel = pick_fill_kernel<Real>(choice);
+    plan.effects = effects;
+    plan.depth_test = options.visibility == Visibility::depth_buffer;
+    plan.shade_visible_only = !plan.depth_test && overdraw_shades_visible_only(scene, options, effects);
+    return plan;
+}
+
+template <typename Real>
+void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<Real>& plan, const Bins<Real>& bins,
+               int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats,
+               ProgressMonitor& progress) {
+    image.rows = rows;
+    image.columns = columns;
+    image.pixels.assign(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns), scene.image.background);
+    prepare_memory(plan, bins.bands, image.pixels.size(), memory);
+    tbb::parallel_for(0, bins.bands, [&](int band) {
+        if (progress.cancelled()) return;
+        FillTarget<Real> target{image, memory.depth_buffer, band * kBandRows, std::min(rows, (band + 1) * kBandRows),
+                                plan.depth_test, 0, 0};
+        LightVectorsAt<Real>& vectors = memory.band_vectors[band];
+        memory.covered[band] =
+            plan.shade_visible_only
+                ? fill_visible_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors,
+                                     memory.band_layers[band])
+                : fill_every_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors);
+        memory.shaded[band] = target.samples;
+        memory.replaced[band] = target.replaced;
+        progress.piece_done();
+    });
+    progress.throw_if_cancelled();
+    std::uint64_t shaded = 0;
+    for (int band = 0; band < bins.bands; ++band) {
+        stats.samples_covered += memory.covered[band];
+        stats.samples_shaded += memory.shaded[band];
+        stats.nonfinite_values_replaced += memory.replaced[band];
+        shaded += memory.shaded[band];
+    }
+    if (scene.shader == Shader::phong) {
+        count_term_evaluations(scene, options, plan.effects, shaded, LitPoints::phong_samples, stats);
+    }
+}
+
+#define PHONGRAST_INSTANTIATE_FILL_DRIVER(Real)                                                              \
+    template FillPlan<Real> plan_fill<Real>(const Scene&, const RenderOptions&, const EffectSet&,                \
+                                            const LightRig<Real>&);                                              \
+    template void fill_bins<Real>(const Scene&, const RenderOptions&, const FillPlan<Real>&, const Bins<Real>&,  \
+                                  int, int, FillMemory<Real>&, Image&, RenderStats&, ProgressMonitor&);
+PHONGRAST_INSTANTIATE_FILL_DRIVER(float)
+PHONGRAST_INSTANTIATE_FILL_DRIVER(double)
+#undef PHONGRAST_INSTANTIATE_FILL_DRIVER
+
+}  // namespace phongrast::detail

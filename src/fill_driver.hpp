@@ -1,0 +1,60 @@
+// The fill driver (internal header): picks the fill kernel for the scene and
+// runs it over the bins, one band of rows per task, with painter's order's
+// overdraw strategy (shade every layer, or only the visible one).
+#ifndef PHONGRAST_SRC_FILL_DRIVER_HPP
+#define PHONGRAST_SRC_FILL_DRIVER_HPP
+
+#include <cstdint>
+#include <vector>
+
+#include "binning.hpp"
+#include "fill_types.hpp"
+#include "phongrast/image.hpp"
+#include "phongrast/render.hpp"
+#include "progress_monitor.hpp"
+
+namespace phongrast::detail {
+
+/// Overdraw::shade_visible's scratch for one band of rows.
+struct VisibleLayer {
+    std::vector<std::uint32_t> owner;  ///< per sample of the band: its last triangle, or kNoOwner
+    std::vector<std::uint8_t> shown;   ///< per triangle of the band: owns at least one sample
+};
+
+/// The fill's scratch, kept from frame to frame; per band, not per thread
+/// (see light_vertices()).
+template <typename Real>
+struct FillMemory {
+    std::vector<Real> depth_buffer;  ///< Visibility::depth_buffer only: z_c per sample
+    std::vector<std::uint64_t> shaded, replaced, covered;  ///< per band
+    std::vector<LightVectorsAt<Real>> band_vectors;
+    std::vector<VisibleLayer> band_layers;
+};
+
+/// How this render fills: the kernel, its constants and the strategy.
+template <typename Real>
+struct FillPlan {
+    FillKernel<Real> kernel = nullptr;
+    FillSetup<Real> setup;
+    bool depth_test = false;         ///< Visibility::depth_buffer
+    bool shade_visible_only = false; ///< Overdraw::shade_visible in effect
+    EffectSet effects;               ///< what the kernel evaluates (for the term counts)
+};
+
+/// Chooses the kernel and strategy for the scene, its effects and the options.
+template <typename Real>
+FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const EffectSet& effects,
+                         const LightRig<Real>& rig);
+
+/// Fills `image` (resized to rows x columns samples and cleared to the
+/// background) from the bins; adds the samples covered and shaded, the
+/// values replaced and, for Phong, the lighting done to `stats`. One band is
+/// one piece of `progress`'s current stage; a cancelled render stops early.
+template <typename Real>
+void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<Real>& plan, const Bins<Real>& bins,
+               int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats,
+               ProgressMonitor& progress);
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_FILL_DRIVER_HPP

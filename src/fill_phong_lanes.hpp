@@ -1,0 +1,246 @@
+// Batched Phong shading for the fill kernels (internal header, included by
+// fill_kernels.hpp once per instruction set, in its namespace).
+//
+#ifndef PHONGRAST_SRC_FILL_PHONG_LANES_HPP
+#define PHONGRAST_SRC_FILL_PHONG_LANES_HPP
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "fill_types.hpp"
+
+/// The helpers below are meant to fold into shade_phong_batch(), so that its
+/// single-lane instantiation keeps a constant trip count throughout.
+#if defined(__GNUC__) || defined(__clang__)
+#define PHONGRAST_FILL_INLINE inline __attribute__((always_inline))
+#else
+#define PHONGRAST_FILL_INLINE inline
+#endif
+
+namespace phongrast::detail {
+inline namespace PHONGRAST_FILL_ISA {
+
+/// Phong shades up to kSampleBatch samples of a span at a time, structure of
+/// arrays: every step below is a loop over the n lanes with no call and no
+/// branch (selects only), which GCC vectorises (SSE2: 4 floats or 2 doubles per
+/// instruction, AVX2 twice as many; the remainder in scalar code with the same operations; check
+/// with -fopt-info-vec). A run-time trip count keeps GCC from unrolling the
+/// loops instead, and costs no lanes past the end of a span. Lane for lane it performs the scalar formula's
+/// operations in the same order (see shading.hpp), so the specialised and the
+/// general kernel, which both shade through here, agree bit for bit.
+constexpr int kSampleBatch = 32;
+
+template <typename Real>
+using Lanes = Real[kSampleBatch];
+
+/// The lighting terms a batch evaluates: fixed at compile time for the specialised kernels.
+template <bool Ambient, bool Diffuse, bool Specular>
+struct FixedTerms {
+    static constexpr bool ambient() { return Ambient; }
+    static constexpr bool diffuse() { return Diffuse; }
+    static constexpr bool specular() { return Specular; }
+};
+/// ... or asked at run time, as the general kernel does.
+struct SelectedTerms {
+    Lighting lighting;
+    bool ambient() const { return lighting.ambient; }
+    bool diffuse() const { return lighting.diffuse; }
+    bool specular() const { return lighting.specular; }
+};
+
+/// out = a * wa + b * wb + c * wc per lane (glm's order: (w0 a + w1 b) + w2 c).
+template <typename Real>
+inline void interpolate_lanes(int n, const Lanes<Real>* w, Real a, Real b, Real c, Lanes<Real>& out) {
+    for (int l = 0; l < n; ++l) out[l] = (w[0][l] * a + w[1][l] * b) + w[2][l] * c;
+}
+
+/// safe_normalize() lane by lane: the same operations, the branch as a select.
+template <typename Real>
+inline void normalize_lanes(int n, Lanes<Real>& x, Lanes<Real>& y, Lanes<Real>& z) {
+    for (int l = 0; l < n; ++l) {
+        const Real ax = std::abs(x[l]), ay = std::abs(y[l]), az = std::abs(z[l]);
+        const Real m = ay < az ? az : ay;       // std::max(ay, az)
+        const Real largest = ax < m ? m : ax;  // std::max(ax, m)
+        const bool ok = largest > Real(0) && largest <= std::numeric_limits<Real>::max();
+        const Real divisor = ok ? largest : Real(1);
+        const Real sx = x[l] / divisor, sy = y[l] / divisor, sz = z[l] / divisor;
+        const Real length = std::sqrt((sx * sx + sy * sy) + sz * sz);
+        x[l] = ok ? sx / length : Real(0);
+        y[l] = ok ? sy / length : Real(0);
+        z[l] = ok ? sz / length : Real(0);
+    }
+}
+
+/// out = x^exponent per lane, for x in [0, 1]. A whole exponent up to 256 (the
+/// usual case: 16, 32, ...) is computed by repeated squaring, in vector
+/// registers, within a few ulps of std::pow (0^0 = 1 as the contract says);
+/// any other exponent calls std::pow lane by lane.
+template <typename Real>
+inline void power_lanes(int n, const Lanes<Real>& x, Real exponent, Lanes<Real>& out) {
+    if (exponent >= Real(0) && exponent <= Real(256) && exponent == std::floor(exponent)) {
+        for (int l = 0; l < n; ++l) out[l] = Real(1);
+        Lanes<Real> square;
+        for (int l = 0; l < n; ++l) square[l] = x[l];
+        for (unsigned bits = static_cast<unsigned>(exponent); bits != 0; bits >>= 1) {
+            if (bits & 1u) {
+                for (int l = 0; l < n; ++l) out[l] *= square[l];
+            }
+            if (bits > 1) {
+                for (int l = 0; l < n; ++l) square[l] *= square[l];
+            }
+        }
+        return;
+    }
+    for (int l = 0; l < n; ++l) out[l] = std::pow(x[l], exponent);
+}
+
+/// The surface colour of each lane into `color`, and out = its ambient term.
+template <typename Real, bool UniformColor, typename Terms>
+PHONGRAST_FILL_INLINE void shade_ambient_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w,
+                                               const Terms& terms, const FillSetup<Real>& setup,
+                                               Lanes<Real>* color, Lanes<Real>* out) {
+    for (int c = 0; c < 3; ++c) {
+        if (UniformColor) {
+            for (int l = 0; l < n; ++l) color[c][l] = setup.color[c];
+        } else {
+            interpolate_lanes(n, w, draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], color[c]);
+        }
+        for (int l = 0; l < n; ++l) out[c][l] = Real(0);
+        if (terms.ambient()) {
+            const Real factor = setup.rig->ambient_factor[c];
+            for (int l = 0; l < n; ++l) out[c][l] += factor * color[c][l];
+        }
+    }
+}
+
+/// The unit normal of each lane, its camera-space point (per-sample vectors)
+/// and, for specular, the unit vector to the eye.
+template <typename Real, bool PerSampleVectors, typename Terms>
+PHONGRAST_FILL_INLINE void surface_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w,
+                                         const Terms& terms, const LightVectorsAt<Real>& vectors,
+                                         Lanes<Real>* normal, Lanes<Real>* point, Lanes<Real>* eye) {
+    for (int c = 0; c < 3; ++c) {
+        interpolate_lanes(n, w, draw.v[0]->normal[c], draw.v[1]->normal[c], draw.v[2]->normal[c], normal[c]);
+    }
+    normalize_lanes(n, normal[0], normal[1], normal[2]);
+    if (PerSampleVectors) {
+        for (int c = 0; c < 3; ++c) {
+            interpolate_lanes(n, w, draw.v[0]->position[c], draw.v[1]->position[c], draw.v[2]->position[c], point[c]);
+        }
+        if (terms.specular()) {
+            for (int c = 0; c < 3; ++c) {
+                for (int l = 0; l < n; ++l) eye[c][l] = -point[c][l];
+            }
+            normalize_lanes(n, eye[0], eye[1], eye[2]);  // the eye is the camera-space origin
+        }
+    } else if (terms.specular()) {
+        for (int c = 0; c < 3; ++c) {
+            for (int l = 0; l < n; ++l) eye[c][l] = vectors.to_eye[c];
+        }
+    }
+}
+
+/// specular_from_direction(): (Ip * ks) * min(1, max(0, R.V))^n with R = (2 N) (N.L) - L, added to out.
+template <typename Real>
+PHONGRAST_FILL_INLINE void add_specular_lanes(int n, const Vec3<Real>& intensity_ks, Real exponent,
+                                              const Lanes<Real>* normal, const Lanes<Real>* to_light,
+                                              const Lanes<Real>& n_dot_l, const Lanes<Real>* eye, Lanes<Real>* out) {
+    Lanes<Real> r_dot_v, highlight;
+    for (int l = 0; l < n; ++l) {
+        const Real rx = (Real(2) * normal[0][l]) * n_dot_l[l] - to_light[0][l];
+        const Real ry = (Real(2) * normal[1][l]) * n_dot_l[l] - to_light[1][l];
+        const Real rz = (Real(2) * normal[2][l]) * n_dot_l[l] - to_light[2][l];
+        const Real d = (rx * eye[0][l] + ry * eye[1][l]) + rz * eye[2][l];
+        const Real clamped_low = Real(0) < d ? d : Real(0);
+        r_dot_v[l] = clamped_low < Real(1) ? clamped_low : Real(1);
+    }
+    power_lanes(n, r_dot_v, exponent, highlight);
+    const Real threshold = grazing_threshold<Real>();
+    for (int l = 0; l < n; ++l) {
+        const Real eye_length2 = (eye[0][l] * eye[0][l] + eye[1][l] * eye[1][l]) + eye[2][l] * eye[2][l];
+        const bool lit = n_dot_l[l] > threshold && eye_length2 != Real(0);
+        for (int c = 0; c < 3; ++c) out[c][l] += lit ? intensity_ks[c] * highlight[l] : Real(0);
+    }
+}
+
+/// Adds light k's diffuse and specular terms of each lane to out.
+template <typename Real, bool PerSampleVectors, typename Terms>
+PHONGRAST_FILL_INLINE void add_light_lanes(int n, std::size_t k, const Terms& terms,
+                                           const std::vector<CameraLight<Real>>& lights,
+                                           const LightVectorsAt<Real>& vectors, const LightRig<Real>& rig,
+                                           const Lanes<Real>* normal, const Lanes<Real>* point,
+                                           const Lanes<Real>* eye, const Lanes<Real>* color, Lanes<Real>* out) {
+    Lanes<Real> to_light[3], n_dot_l;
+    for (int c = 0; c < 3; ++c) {
+        if (PerSampleVectors) {
+            const Real light = lights[k].position[c];
+            for (int l = 0; l < n; ++l) to_light[c][l] = light - point[c][l];
+        } else {
+            for (int l = 0; l < n; ++l) to_light[c][l] = vectors.to_light[k][c];
+        }
+    }
+    if (PerSampleVectors) normalize_lanes(n, to_light[0], to_light[1], to_light[2]);
+    for (int l = 0; l < n; ++l) {
+        n_dot_l[l] = (normal[0][l] * to_light[0][l] + normal[1][l] * to_light[1][l]) + normal[2][l] * to_light[2][l];
+    }
+    const Vec3<Real> intensity = lights[k].intensity;
+    if (terms.diffuse()) {
+        // diffuse_from_direction(): ((Ip * kd) * c) * N.L, or zero at or below the grazing threshold.
+        const Real threshold = grazing_threshold<Real>();
+        const Vec3<Real> intensity_kd = intensity * Vec3<Real>(rig.material.kd);
+        for (int l = 0; l < n; ++l) {
+            const bool lit = n_dot_l[l] > threshold;
+            for (int c = 0; c < 3; ++c) out[c][l] += lit ? (intensity_kd[c] * color[c][l]) * n_dot_l[l] : Real(0);
+        }
+    }
+    if (terms.specular()) {
+        add_specular_lanes(n, intensity * Vec3<Real>(rig.material.ks), static_cast<Real>(rig.material.n), normal,
+                           to_light, n_dot_l, eye, out);
+    }
+}
+
+/// Shades the n samples whose weights are w into out (three channels).
+template <typename Real, bool PerSampleVectors, bool UniformColor, int FixedCount, typename Terms>
+void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
+                       const std::vector<CameraLight<Real>>& lights, const LightVectorsAt<Real>& vectors,
+                       const FillSetup<Real>& setup, Lanes<Real>* out) {
+    if constexpr (FixedCount > 0) n = FixedCount;  // a constant trip count: straight scalar code
+    Lanes<Real> color[3];
+    shade_ambient_lanes<Real, UniformColor>(draw, n, w, terms, setup, color, out);
+    if (!(terms.diffuse() || terms.specular()) || lights.empty()) return;
+    Lanes<Real> normal[3], point[3], eye[3] = {};
+    surface_lanes<Real, PerSampleVectors>(draw, n, w, terms, vectors, normal, point, eye);
+    for (std::size_t k = 0; k < lights.size(); ++k) {
+        add_light_lanes<Real, PerSampleVectors>(n, k, terms, lights, vectors, *setup.rig, normal, point, eye, color,
+                                                out);
+    }
+}
+
+/// shade_phong_batch() for n samples. Below one vector's worth (tiny triangles
+/// of large meshes) the samples go one at a time through the single-lane
+/// instantiation, whose loops compile to plain scalar code: the vector loops'
+/// set-up would cost more than the work. Same operations either way.
+template <typename Real, bool PerSampleVectors, bool UniformColor, typename Terms>
+void shade_phong_samples(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
+                         const std::vector<CameraLight<Real>>& lights, const LightVectorsAt<Real>& vectors,
+                         const FillSetup<Real>& setup, Lanes<Real>* out) {
+    constexpr int kVectorWidth = PHONGRAST_FILL_VECTOR_BYTES / sizeof(Real);
+    if (n >= kVectorWidth) {
+        shade_phong_batch<Real, PerSampleVectors, UniformColor, 0>(draw, n, w, terms, lights, vectors, setup, out);
+        return;
+    }
+    for (int l = 0; l < n; ++l) {
+        Lanes<Real> one_w[3], one_out[3];
+        for (int i = 0; i < 3; ++i) one_w[i][0] = w[i][l];
+        shade_phong_batch<Real, PerSampleVectors, UniformColor, 1>(draw, 1, one_w, terms, lights, vectors, setup,
+                                                                   one_out);
+        for (int c = 0; c < 3; ++c) out[c][l] = one_out[c][0];
+    }
+}
+
+}  // namespace PHONGRAST_FILL_ISA
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_FILL_PHONG_LANES_HPP

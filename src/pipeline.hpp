@@ -1,0 +1,57 @@
+// One render pass through the stages (internal header), and the memory a
+// Renderer keeps for it from frame to frame.
+#ifndef PHONGRAST_SRC_PIPELINE_HPP
+#define PHONGRAST_SRC_PIPELINE_HPP
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "aov_pass.hpp"
+#include "binning.hpp"
+#include "fill_driver.hpp"
+#include "painter_order.hpp"
+#include "progress_monitor.hpp"
+#include "phongrast/render.hpp"
+#include "shading.hpp"
+#include "triangle_setup.hpp"
+#include "vertex_stage.hpp"
+
+namespace phongrast::detail {
+
+/// Everything a render pass works in, kept by a Renderer from one frame to
+/// the next: vectors are resized, never shrunk, so a frame no larger than an
+/// earlier one allocates nothing.
+template <typename Real>
+struct FrameMemory {
+    VertexStageMemory<Real> vertex_stage;
+    TransformedVertices<Real> vertices;
+    LightRig<Real> rig;
+    PainterOrderMemory painter;
+    std::vector<std::uint32_t> order;  ///< triangle indices in painter's order
+    DrawList<Real> draws;
+    BinningMemory binning;
+    Bins<Real> bins;
+    FillMemory<Real> fill;
+};
+
+/// What one render pass writes: the image, and the extra outputs `aov_planes`
+/// asks for (none: the pass does no work for them).
+struct PassOutput {
+    Image& image;
+    const AovRequest& aov_planes;
+    AovSamples& aovs;
+};
+
+/// Renders `scene` at rows x columns samples, each sample `sample_offset`
+/// pixels from its pixel's centre, into `out` (its memory reused); adds
+/// this pass's counts to `stats`. Reports progress; throws RenderCancelled
+/// when the callback asks to stop.
+template <typename Real>
+void render_pass(const Scene& scene, const RenderOptions& options, int rows, int columns, glm::dvec2 sample_offset,
+                 FrameMemory<Real>& memory, RenderStats& stats, const PassOutput& out, ProgressMonitor& progress);
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_PIPELINE_HPP

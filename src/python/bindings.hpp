@@ -1,0 +1,20 @@
+// The parts of the phongrast module, each adding its functions and classes.
+#ifndef PHONGRAST_PYTHON_BINDINGS_HPP
+#define PHONGRAST_PYTHON_BINDINGS_HPP
+
+#include <pybind11/pybind11.h>
+
+namespace phongrast::python {
+
+namespace py = pybind11;
+
+/// PhongMaterial, PointLight, light, calculate_normals, render_object.
+void bind_seed_functions(py::module_& module);
+/// shade_gouraud and shade_phong: one triangle into a canvas.
+void bind_seed_fill(py::module_& module);
+/// Mesh, Scene, render, Renderer, read_image, write_image.
+void bind_scene_api(py::module_& module);
+
+}  // namespace phongrast::python
+
+#endif  // PHONGRAST_PYTHON_BINDINGS_HPP

@@ -1,0 +1,42 @@
+// phongrast::Image <-> numpy, without copying where the layout allows.
+#ifndef PHONGRAST_PYTHON_IMAGE_ARRAY_HPP
+#define PHONGRAST_PYTHON_IMAGE_ARRAY_HPP
+
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <pybind11/numpy.h>
+
+#include "phongrast/image.hpp"
+#include "phongrast/render.hpp"
+
+namespace phongrast::python {
+
+namespace py = pybind11;
+
+/// An M x N x 3 float32 array that takes over the image's pixel buffer: no copy,
+/// and the buffer is freed when the last array (or view) using it goes away.
+py::array image_to_array(Image&& image);
+/// An Nv x 3 array that takes over `values` (float32 for vec3, float64 for dvec3).
+py::array points_to_array(std::vector<glm::vec3>&& values);
+/// Copies an M x N x 3 array of numbers into an Image (for writing files).
+Image array_to_image(py::handle value, const std::string& name);
+/// A numpy view of `count` x 3 values at `data`, kept alive by `owner`.
+template <typename Component>
+py::array view_rows_of_three(Component* data, std::size_t count, py::handle owner, bool writable) {
+    py::array view(py::dtype::of<Component>(),
+                   {static_cast<py::ssize_t>(count), py::ssize_t{3}},
+                   {static_cast<py::ssize_t>(3 * sizeof(Component)), static_cast<py::ssize_t>(sizeof(Component))},
+                   data, owner);
+    if (!writable) {
+        py::detail::array_proxy(view.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    }
+    return view;
+}
+/// RenderStats as a dict of plain Python numbers (and the effect set as a string).
+py::dict stats_to_dict(const RenderStats& stats);
+
+}  // namespace phongrast::python
+
+#endif  // PHONGRAST_PYTHON_IMAGE_ARRAY_HPP

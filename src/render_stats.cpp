@@ -1,0 +1,55 @@
+// RenderStats' sums and the table of its counters, and the term counts.
+#include <vector>
+
+#include "phongrast/render.hpp"
+#include "term_counts.hpp"
+
+namespace phongrast {
+
+const std::vector<RenderCounter>& render_counters() {
+    static const std::vector<RenderCounter> counters = {
+        {"triangles_in", &RenderStats::triangles_in, true},
+        {"triangles_culled", &RenderStats::triangles_culled, true},
+        {"triangles_degenerate", &RenderStats::triangles_degenerate, true},
+        {"triangles_dropped", &RenderStats::triangles_dropped, true},
+        {"triangles_clipped", &RenderStats::triangles_clipped, true},
+        {"triangles_outside", &RenderStats::triangles_outside, true},
+        {"triangles_between_samples", &RenderStats::triangles_between_samples, true},
+        {"triangles_drawn", &RenderStats::triangles_drawn, true},
+        {"samples_covered", &RenderStats::samples_covered, false},
+        {"samples_shaded", &RenderStats::samples_shaded, false},
+        {"nonfinite_values_replaced", &RenderStats::nonfinite_values_replaced, false},
+        {"ambient_evaluations", &RenderStats::ambient_evaluations, false},
+        {"diffuse_evaluations", &RenderStats::diffuse_evaluations, false},
+        {"specular_evaluations", &RenderStats::specular_evaluations, false},
+        {"normal_interpolations", &RenderStats::normal_interpolations, false},
+    };
+    return counters;
+}
+
+RenderStats& RenderStats::operator+=(const RenderStats& other) {
+    for (const RenderCounter& counter : render_counters()) this->*counter.field += other.*counter.field;
+    seconds += other.seconds;
+    return *this;
+}
+
+namespace detail {
+
+void count_term_evaluations(const Scene& scene, const RenderOptions& options, const EffectSet& effects,
+                            std::uint64_t points, LitPoints kind, RenderStats& stats) {
+    const bool phong_samples = kind == LitPoints::phong_samples;
+    if (options.specialize_effects) {
+        if (effects.ambient) stats.ambient_evaluations += points;
+        if (effects.diffuse) stats.diffuse_evaluations += points * effects.active_lights;
+        if (effects.specular) stats.specular_evaluations += points * effects.active_lights;
+        if (phong_samples && effects.normals) stats.normal_interpolations += points;
+    } else {
+        if (scene.lighting.ambient) stats.ambient_evaluations += points;
+        if (scene.lighting.diffuse) stats.diffuse_evaluations += points * scene.lights.size();
+        if (scene.lighting.specular) stats.specular_evaluations += points * scene.lights.size();
+        if (phong_samples) stats.normal_interpolations += points;
+    }
+}
+
+}  // namespace detail
+}  // namespace phongrast

@@ -1,0 +1,124 @@
+// The public entry points: Renderer (a render pass's memory and a thread
+// arena per thread count, kept from frame to frame), render() and
+// render_object().
+#include <chrono>
+#include <memory>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <tbb/task_arena.h>
+
+#include "aov_pass.hpp"
+#include "phongrast/render.hpp"
+#include "pipeline.hpp"
+#include "progress_monitor.hpp"
+#include "resolve.hpp"
+#include "validation.hpp"
+
+namespace phongrast {
+namespace detail {
+
+/// A Renderer's state: its options, its thread arenas and the memory every frame works in.
+struct RendererState final : PassRenderer {
+    RenderOptions options;
+    std::vector<std::pair<int, std::unique_ptr<tbb::task_arena>>> arenas;
+    RenderResult result;
+    ResolveImages resolve_images;
+    FrameMemory<float> single;
+    FrameMemory<double> twice;
+    AovSamples aov_samples;  ///< one pass's extra outputs per sample, before their resolve into result.aovs
+    // During render():
+    const Scene* scene = nullptr;          ///< the scene being rendered
+    ProgressMonitor* progress = nullptr;   ///< its progress reports
+    AovRequest aov_planes;                 ///< the planes each pass fills (none unless asked for)
+    int passes = 1, passes_done = 0;       ///< render passes of this frame (rotated grid: one per sample)
+
+    /// One arena per thread count asked for, kept: switching thread counts between frames allocates nothing either.
+    tbb::task_arena& arena_for(int threads) {
+        for (auto& [count, arena] : arenas) {
+            if (count == threads) return *arena;
+        }
+        constexpr int kAllCores = tbb::task_arena::automatic;  // a copy: no reference to TBB's static member
+        arenas.emplace_back(threads, std::make_unique<tbb::task_arena>(threads > 0 ? threads : kAllCores));
+        return *arenas.back().second;
+    }
+
+    void render_pass(int rows, int columns, glm::dvec2 sample_offset, RenderStats& stats, Image& image) override {
+        progress->set_pass(passes_done++, passes);
+        const PassOutput out{image, aov_planes, aov_samples};
+        if (options.precision == Precision::double_float) {
+            detail::render_pass(*scene, options, rows, columns, sample_offset, twice, stats, out, *progress);
+        } else {
+            detail::render_pass(*scene, options, rows, columns, sample_offset, single, stats, out, *progress);
+        }
+        // A pass has samples_per_axis samples per pixel axis (ordered grid) or one (rotated grid, no supersampling).
+        if (aov_planes.any()) resolve_aovs(aov_samples, rows / scene->image.rows, aov_planes, result.aovs);
+    }
+
+    void render(const Scene& rendered) {
+        const auto start = std::chrono::steady_clock::now();
+        validate_render_request(rendered, options);
+        ProgressMonitor monitor(options.progress);
+        const int factor = options.samples_per_axis;
+        scene = &rendered;
+        progress = &monitor;
+        aov_planes = options.aovs.any() ? sample_planes_for(options.aovs, factor) : AovRequest{};
+        passes = factor > 1 && options.sample_pattern == SamplePattern::rotated_grid ? factor * factor : 1;
+        passes_done = 0;
+        reset_aov_planes(rendered.image.rows, rendered.image.columns, aov_planes, result.aovs);
+        result.stats = RenderStats{};
+        result.stats.triangles_in = rendered.mesh.triangles.size();
+        arena_for(options.threads).execute([&] { render_and_resolve(rendered, options, *this, resolve_images, result); });
+        scene = nullptr;
+        progress = nullptr;
+        if (aov_planes.any()) finish_aovs(options.aovs, factor * factor, result.aovs);
+        monitor.finish();
+        result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+};
+
+}  // namespace detail
+
+Renderer::Renderer(const RenderOptions& options) : state_(std::make_unique<detail::RendererState>()) {
+    state_->options = options;
+}
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+
+const RenderOptions& Renderer::options() const { return state_->options; }
+void Renderer::set_options(const RenderOptions& options) { state_->options = options; }
+
+const RenderResult& Renderer::render(const Scene& scene) {
+    state_->render(scene);
+    return state_->result;
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    detail::RendererState state;
+    state.options = options;
+    state.render(scene);
+    return std::move(state.result);
+}
+
+Image render_object(const std::vector<glm::dvec3>& positions, const std::vector<glm::vec3>& colors,
+                    const std::vector<Triangle>& faces, const Camera& camera, const ImageSpec& image,
+                    const PhongMaterial& material, const glm::vec3& ambient,
+                    const std::vector<PointLight>& lights, Shader shader, Lighting lighting,
+                    const RenderOptions& options) {
+    Scene scene;
+    scene.mesh.positions = positions;
+    scene.mesh.colors = colors;
+    scene.mesh.triangles = faces;
+    scene.camera = camera;
+    scene.image = image;
+    scene.material = material;
+    scene.ambient = ambient;
+    scene.lights = lights;
+    scene.shader = shader;
+    scene.lighting = lighting;
+    return render(scene, options).image;
+}
+
+}  // namespace phongrast

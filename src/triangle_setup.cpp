@@ -1,0 +1,299 @@
+#include "triangle_setup.hpp"
+
+#include <algorithm>
+
+#include <tbb/parallel_for.h>
+
+#include "back_faces.hpp"
+#include "clipping.hpp"
+#include "prefetch.hpp"
+#include "raster.hpp"
+#include "term_counts.hpp"
+
+namespace phongrast::detail {
+namespace {
+
+/// Triangles set up by one task.
+constexpr std::size_t kSetupChunk = 4096;
+
+/// One corner of a piece to draw: where it is (sample coordinates, z_c) and
+/// the varyings the draw triangle will point to.
+template <typename Real>
+struct Corner {
+    double column, row, depth;
+    const Varyings<Real>* varyings;
+};
+
+/// How a triangle's pieces fared, for the counts.
+struct PiecesOutcome {
+    bool drawn = false;        ///< some piece covers a sample
+    bool has_area = false;     ///< some piece has non-zero area after snapping
+    bool meets_image = true;   ///< the (clipped) polygon overlaps the image
+};
+
+template <typename Real>
+class TriangleSetup {
+public:
+    TriangleSetup(const SetupInput<Real>& input, std::vector<DrawTriangle<Real>>& out,
+                  ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors)
+        : in_(input), vertices_(input.vertices), out_(out), clip_vertices_(clip_vertices), counts_(counts),
+          vectors_(vectors) {}
+
+    // Both paths, whole and clipped, make their pieces with set_up_piece()
+    // and are counted and flat-lit here.
+    void run(std::uint32_t source) {
+        source_ = source;
+        const Triangle& tri = in_.scene.mesh.triangles[source];
+        if (in_.cull != HiddenBackFaces::unknown && faces_away(in_.scene.mesh, in_.scene.camera.eye, in_.cull, tri)) {
+            ++counts_.culled;
+            return;
+        }
+        const bool inside_image = vertices_.inside_image(tri[0], in_.view) &&
+                                  vertices_.inside_image(tri[1], in_.view) && vertices_.inside_image(tri[2], in_.view);
+        if (!inside_image && in_.options.border == BorderPolicy::drop_triangle) {
+            ++counts_.dropped;
+            return;
+        }
+        const std::vector<Varyings<Real>>& varyings = vertices_.varyings;
+        const Vec3<Real> centroid =
+            (varyings[tri[0]].position + varyings[tri[1]].position + varyings[tri[2]].position) / Real(3);
+        const std::size_t first_draw = out_.size();
+        const double near_depth = in_.view.near_depth;
+        const bool whole = inside_image && vertices_.camera_depth[tri[0]] >= near_depth &&
+                           vertices_.camera_depth[tri[1]] >= near_depth && vertices_.camera_depth[tri[2]] >= near_depth;
+        PiecesOutcome outcome;
+        if (whole) {
+            outcome = set_up_whole(tri, centroid);
+        } else if (!set_up_clipped(tri, centroid, inside_image, outcome)) {
+            ++counts_.outside;  // nothing left after clipping
+            return;
+        }
+        if (outcome.drawn && in_.scene.shader == Shader::flat) {
+            // Lit only once something is to be drawn: clipped-away and
+            // degenerate triangles cost no lighting.
+            const Vec3<Real> lit = flat_color(tri, centroid);
+            ++counts_.lit_points;
+            for (std::size_t d = first_draw; d < out_.size(); ++d) {
+                for (Vec3<Real>& corner_lit : out_[d].lit) corner_lit = lit;
+            }
+        }
+        count(outcome);
+    }
+
+private:
+    void count(const PiecesOutcome& outcome) {
+        if (outcome.drawn) {
+            ++counts_.drawn;
+        } else if (!outcome.has_area) {
+            ++counts_.degenerate;
+        } else if (outcome.meets_image) {
+            ++counts_.between_samples;
+        } else {
+            ++counts_.outside;  // within the guard band, beyond the image's border
+        }
+    }
+
+    /// Snaps three corners and sets up their coverage into `draw`; false when
+    /// they cover no sample. `order[i]` is the corner that became draw corner i.
+    bool set_up_piece(const Corner<Real> (&corner)[3], const Vec3<Real>& centroid, DrawTriangle<Real>& draw,
+                      PiecesOutcome& outcome, int (&order)[3]) const {
+        const SnappedPoint a = snap(corner[0].column, corner[0].row);
+        const SnappedPoint b = snap(corner[1].column, corner[1].row);
+        const SnappedPoint c = snap(corner[2].column, corner[2].row);
+        const bool covers = setup_coverage(a, b, c, in_.view.frame.rows, in_.view.frame.columns, draw.coverage);
+        if (draw.coverage.area2 != 0) outcome.has_area = true;  // set whenever the snapped area is non-zero
+        if (!covers) return false;
+        order[0] = 0;
+        order[1] = draw.coverage.swapped ? 2 : 1;
+        order[2] = draw.coverage.swapped ? 1 : 2;
+        for (int i = 0; i < 3; ++i) {
+            const Corner<Real>& from = corner[order[i]];
+            draw.v[i] = from.varyings;
+            draw.lit[i] = from.varyings->lit;
+            draw.depth[i] = static_cast<Real>(from.depth);
+        }
+        draw.centroid = centroid;
+        draw.source = source_;
+        outcome.drawn = true;
+        return true;
+    }
+
+    // The common case, nothing to clip: one piece straight from the vertex arrays.
+    PiecesOutcome set_up_whole(const Triangle& tri, const Vec3<Real>& centroid) {
+        Corner<Real> corner[3];
+        for (int i = 0; i < 3; ++i) {
+            corner[i] = {vertices_.column[tri[i]], vertices_.row[tri[i]], vertices_.camera_depth[tri[i]],
+                         &vertices_.varyings[tri[i]]};
+        }
+        PiecesOutcome outcome;
+        DrawTriangle<Real> draw;
+        int order[3];
+        if (!set_up_piece(corner, centroid, draw, outcome, order)) return outcome;
+        if (in_.scene.shader == Shader::gouraud) {
+            // Lit copies of the corners: light_corners() writes their `lit`, the mesh's vertices stay as they are.
+            Varyings<Real> copies[3] = {*draw.v[0], *draw.v[1], *draw.v[2]};
+            Varyings<Real>* corners[3] = {&copies[0], &copies[1], &copies[2]};
+            counts_.lit_points += light_corners(corners, centroid);
+            for (int i = 0; i < 3; ++i) draw.lit[i] = copies[i].lit;
+        }
+        out_.push_back(draw);
+        return outcome;
+    }
+
+    // A triangle crossing the image border or the near plane: clipped to a
+    // polygon, drawn as a fan. Returns false when clipping leaves nothing.
+    bool set_up_clipped(const Triangle& tri, const Vec3<Real>& centroid, bool inside_image, PiecesOutcome& outcome) {
+        ClipPolygon<Real> polygon;
+        polygon.count = 3;
+        for (int i = 0; i < 3; ++i) {
+            ClipVertex<Real>& v = polygon.vertices[i];
+            v.varyings = vertices_.varyings[tri[i]];
+            v.depth = vertices_.camera_depth[tri[i]];
+            v.column = vertices_.column[tri[i]];
+            v.row = vertices_.row[tri[i]];
+        }
+        if (in_.scene.shader == Shader::gouraud) {
+            // Before clipping, so that clipped corners interpolate lit colours.
+            Varyings<Real>* corners[3] = {&polygon.vertices[0].varyings, &polygon.vertices[1].varyings,
+                                          &polygon.vertices[2].varyings};
+            counts_.lit_points += light_corners(corners, centroid);
+        }
+        const bool perspective = in_.options.interpolation == Interpolation::perspective_correct;
+        if (!clip_to_view(polygon, in_.view, perspective)) return false;
+        draw_fan(polygon, centroid, outcome);
+        if (!inside_image) ++counts_.clipped;
+        if (!outcome.drawn && outcome.has_area) {
+            outcome.meets_image = meets_image(polygon, in_.view.frame.rows, in_.view.frame.columns);
+        }
+        return true;
+    }
+
+    void draw_fan(const ClipPolygon<Real>& polygon, const Vec3<Real>& centroid, PiecesOutcome& outcome) {
+        const Varyings<Real>* stored[8] = {};  // the polygon's corners, stored once the first piece is drawn
+        for (std::size_t k = 1; k + 1 < polygon.count; ++k) {
+            const std::size_t index[3] = {0, k, k + 1};
+            Corner<Real> corner[3];
+            for (int i = 0; i < 3; ++i) {
+                const ClipVertex<Real>& v = polygon.vertices[index[i]];
+                corner[i] = {v.column, v.row, v.depth, &v.varyings};
+            }
+            const bool first = !outcome.drawn;
+            DrawTriangle<Real> draw;
+            int order[3];
+            if (!set_up_piece(corner, centroid, draw, outcome, order)) continue;
+            if (first) {
+                for (std::size_t i = 0; i < polygon.count; ++i) stored[i] = clip_vertices_.push(polygon.vertices[i].varyings);
+            }
+            for (int i = 0; i < 3; ++i) draw.v[i] = stored[index[order[i]]];
+            out_.push_back(draw);
+        }
+    }
+
+    // Flat: one colour per triangle, lit at the centroid with the mean vertex
+    // normal (renormalised) and the mean vertex colour.
+    Vec3<Real> flat_color(const Triangle& tri, const Vec3<Real>& centroid) const {
+        Vec3<Real> normal(Real(0)), color(Real(0));
+        for (std::uint32_t index : tri) {
+            normal += vertices_.varyings[index].normal;
+            color += vertices_.varyings[index].color;
+        }
+        const Vec3<Real> surface = in_.fill.uniform_color ? in_.fill.color : color / Real(3);
+        return in_.shader(vectors_, centroid, safe_normalize<Real>(normal), surface);
+    }
+
+    // Gouraud with the seed's centroid vectors: lights the triangle's own
+    // corners. Returns the points lit (none for exact vectors, whose `lit`
+    // came from light_vertices()).
+    std::uint64_t light_corners(Varyings<Real>* const corners[3], const Vec3<Real>& centroid) const {
+        if (in_.options.light_vectors != LightVectors::triangle_centroid) return 0;
+        for (int i = 0; i < 3; ++i) {
+            Varyings<Real>& v = *corners[i];
+            v.lit = in_.shader(vectors_, centroid, v.normal, v.color);
+        }
+        return 3;
+    }
+
+    std::uint32_t source_ = 0;  ///< the mesh triangle being set up
+    const SetupInput<Real>& in_;
+    const TransformedVertices<Real>& vertices_;
+    std::vector<DrawTriangle<Real>>& out_;
+    ClipVertexStore<Real>& clip_vertices_;
+    SetupCounts& counts_;
+    LightVectorsAt<Real>& vectors_;
+};
+
+// Painter's order visits the vertices in no particular order: ask for a
+// triangle's vertex data a few triangles before it is set up.
+template <typename Real>
+void prefetch_vertices(const TransformedVertices<Real>& vertices, const Triangle& tri) {
+    for (std::uint32_t index : tri) {
+        prefetch_address(&vertices.column[index]);
+        prefetch_address(&vertices.row[index]);
+        prefetch_address(&vertices.camera_depth[index]);
+        prefetch_object(&vertices.varyings[index]);
+    }
+}
+
+void add_counts(const SetupCounts& counts, RenderStats& stats) {
+    stats.triangles_culled += counts.culled;
+    stats.triangles_dropped += counts.dropped;
+    stats.triangles_clipped += counts.clipped;
+    stats.triangles_outside += counts.outside;
+    stats.triangles_between_samples += counts.between_samples;
+    stats.triangles_degenerate += counts.degenerate;
+    stats.triangles_drawn += counts.drawn;
+}
+
+}  // namespace
+
+template <typename Real>
+void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::vector<DrawTriangle<Real>>& out,
+                     ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors) {
+    TriangleSetup<Real>(input, out, clip_vertices, counts, vectors).run(source);
+}
+
+template <typename Real>
+void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint32_t>& order, DrawList<Real>& draws,
+                      RenderStats& stats, ProgressMonitor& progress) {
+    const std::size_t chunks = (order.size() + kSetupChunk - 1) / kSetupChunk;
+    if (draws.chunk_draws.size() < chunks) draws.chunk_draws.resize(chunks);
+    if (draws.chunk_clip_vertices.size() < chunks) draws.chunk_clip_vertices.resize(chunks);
+    if (draws.chunk_vectors.size() < chunks) draws.chunk_vectors.resize(chunks);
+    draws.chunk_counts.assign(chunks, SetupCounts{});
+    draws.chunks = chunks;
+    const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
+    progress.begin_stage(0.15, 0.4, chunks);
+    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+        if (progress.cancelled()) return;
+        const std::size_t begin = chunk * kSetupChunk;
+        const std::size_t end = std::min(order.size(), begin + kSetupChunk);
+        std::vector<DrawTriangle<Real>>& out = draws.chunk_draws[chunk];
+        out.clear();
+        out.reserve(end - begin);
+        draws.chunk_clip_vertices[chunk].clear();
+        TriangleSetup<Real> setup(input, out, draws.chunk_clip_vertices[chunk], draws.chunk_counts[chunk],
+                                  draws.chunk_vectors[chunk]);
+        for (std::size_t k = begin; k < end; ++k) {
+            if (k + kPrefetchAhead < end) prefetch_vertices(input.vertices, triangles[order[k + kPrefetchAhead]]);
+            setup.run(order[k]);
+        }
+        progress.piece_done();
+    });
+    progress.throw_if_cancelled();
+    for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+        add_counts(draws.chunk_counts[chunk], stats);
+        count_term_evaluations(input.scene, input.options, input.shader.effects, draws.chunk_counts[chunk].lit_points,
+                               LitPoints::outside_the_fill, stats);
+    }
+}
+
+#define PHONGRAST_INSTANTIATE_SETUP(Real)                                                                       \
+    template void set_up_triangles<Real>(const SetupInput<Real>&, const std::vector<std::uint32_t>&,            \
+                                         DrawList<Real>&, RenderStats&, ProgressMonitor&);                      \
+    template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, std::vector<DrawTriangle<Real>>&, \
+                                        ClipVertexStore<Real>&, SetupCounts&, LightVectorsAt<Real>&);
+PHONGRAST_INSTANTIATE_SETUP(float)
+PHONGRAST_INSTANTIATE_SETUP(double)
+#undef PHONGRAST_INSTANTIATE_SETUP
+
+}  // namespace phongrast::detail

@@ -1,0 +1,86 @@
+// Triangle set-up (internal header): each triangle, in painter's order,
+// culled, dropped (seed border rule) or clipped, snapped to fixed point and
+// turned into the DrawTriangles the fill reads, with flat and seed-Gouraud
+// lighting done here once per triangle.
+#ifndef PHONGRAST_SRC_TRIANGLE_SETUP_HPP
+#define PHONGRAST_SRC_TRIANGLE_SETUP_HPP
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "fill_types.hpp"
+#include "scene_analysis.hpp"
+#include "vertex_stage.hpp"
+
+namespace phongrast::detail {
+
+/// Corners created by clipping, which draw triangles point to: stored in
+/// blocks that never move, kept (and reused) from one frame to the next.
+template <typename Real>
+class ClipVertexStore {
+public:
+    void clear() { used_ = 0; }
+    const Varyings<Real>* push(const Varyings<Real>& corner) {
+        const std::size_t block = used_ / kBlockSize;
+        if (block == blocks_.size()) blocks_.push_back(std::make_unique<Varyings<Real>[]>(kBlockSize));
+        Varyings<Real>* slot = &blocks_[block][used_ % kBlockSize];
+        *slot = corner;
+        ++used_;
+        return slot;
+    }
+
+private:
+    static constexpr std::size_t kBlockSize = 256;
+    std::vector<std::unique_ptr<Varyings<Real>[]>> blocks_;
+    std::size_t used_ = 0;
+};
+
+/// What set-up did with the triangles of one chunk: each triangle lands in
+/// exactly one of culled, dropped, outside, between_samples, degenerate and
+/// drawn; clipped counts those of them that were clipped.
+struct SetupCounts {
+    std::uint64_t culled = 0, dropped = 0, clipped = 0, outside = 0, between_samples = 0, degenerate = 0, drawn = 0;
+    std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during set-up
+};
+
+/// Set-up's output: the draw triangles in painter's order, chunk after
+/// chunk, each chunk in order. Fixed-size chunks make the list the same
+/// whatever the number of threads. Kept from frame to frame.
+template <typename Real>
+struct DrawList {
+    std::size_t chunks = 0;  ///< chunks of this frame (the vectors may hold more from earlier frames)
+    std::vector<std::vector<DrawTriangle<Real>>> chunk_draws;
+    std::vector<ClipVertexStore<Real>> chunk_clip_vertices;
+    std::vector<SetupCounts> chunk_counts;
+    std::vector<LightVectorsAt<Real>> chunk_vectors;  ///< per chunk, not per thread (see light_vertices())
+};
+
+/// Everything set-up reads.
+template <typename Real>
+struct SetupInput {
+    const Scene& scene;
+    const RenderOptions& options;
+    const View& view;
+    const TransformedVertices<Real>& vertices;
+    HiddenBackFaces cull;             ///< back_faces_to_cull()
+    const PointShader<Real>& shader;  ///< lights flat centroids and seed-Gouraud corners
+    const FillSetup<Real>& fill;      ///< the uniform surface colour, when there is one
+};
+
+/// Sets up every triangle of `order` (painter's order) into `draws` and adds
+/// the triangle counts and the lighting done to `stats`. Reports progress,
+/// and stops early when the render is cancelled.
+template <typename Real>
+void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint32_t>& order, DrawList<Real>& draws,
+                      RenderStats& stats, ProgressMonitor& progress);
+
+/// Sets up mesh triangle `source`: appends its draw triangles (none, one, or
+/// one per piece of its clipped polygon) to `out` and counts it in `counts`.
+template <typename Real>
+void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::vector<DrawTriangle<Real>>& out,
+                     ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors);
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_TRIANGLE_SETUP_HPP

@@ -1,0 +1,113 @@
+#include "vertex_stage.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace phongrast::detail {
+namespace {
+
+/// Vertices transformed by one task.
+constexpr std::size_t kTransformBlock = 4096;
+/// Vertices lit by one task (Gouraud with exact light vectors).
+constexpr std::size_t kLightingBlock = 1024;
+
+}  // namespace
+
+View::View(const Camera& camera, int rows, int columns, glm::dvec2 offset)
+    : frame(make_camera_frame(camera, rows, columns)), sample_offset(offset),
+      near_depth(camera.focal * kNearPlaneOverFocal) {}
+
+glm::dvec2 View::sample_from_camera(const glm::dvec3& point_camera) const {
+    const ProjectedPoint p = frame.pixel_from_camera(point_camera);
+    return {p.column - sample_offset.x, p.row - sample_offset.y};
+}
+
+template <typename Real>
+void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, VertexStageMemory<Real>& memory,
+                        TransformedVertices<Real>& out, ProgressMonitor& progress) {
+    const std::size_t count = mesh.positions.size();
+    if (need_normals && mesh.normals.empty()) {
+        progress.begin_stage(0.0, 0.05, 1);
+        calculate_normals_into(mesh.positions, mesh.triangles, memory.normals_scratch, memory.normals,
+                               progress.poll_function());
+    }
+    const std::vector<glm::vec3>& normals = mesh.normals.empty() ? memory.normals : mesh.normals;
+    out.camera_depth.resize(count);
+    out.column.resize(count);
+    out.row.resize(count);
+    out.varyings.resize(count);
+    const CameraFrame& frame = view.frame;
+    progress.begin_stage(0.05, 0.1, (count + kTransformBlock - 1) / kTransformBlock);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kTransformBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        if (progress.cancelled()) return;
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+            const glm::dvec3 camera = frame.camera_from_world(mesh.positions[i]);
+            out.camera_depth[i] = camera.z;
+            if (camera.z > 0.0) {
+                const glm::dvec2 sample = view.sample_from_camera(camera);
+                out.column[i] = sample.x;
+                out.row[i] = sample.y;
+            } else {
+                out.column[i] = out.row[i] = std::numeric_limits<double>::quiet_NaN();
+            }
+            Varyings<Real>& v = out.varyings[i];
+            v.position = Vec3<Real>(camera);
+            v.normal = need_normals ? safe_normalize<Real>(Vec3<Real>(
+                                          frame.camera_from_world_direction(glm::dvec3(normals[i]))))
+                                    : Vec3<Real>(Real(0));
+            v.color = mesh.colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(mesh.colors[i]);
+            v.lit = Vec3<Real>(Real(0));
+        }
+        progress.piece_done();
+    });
+    progress.throw_if_cancelled();
+}
+
+template <typename Real>
+void build_light_rig(const Scene& scene, const CameraFrame& frame, LightRig<Real>& rig) {
+    rig.lights.clear();
+    rig.active_lights.clear();
+    rig.material = scene.material;
+    rig.lighting = scene.lighting;
+    // The same product, in the same order, as ambient_term(): ka * Ia, then * c.
+    rig.ambient_factor = Vec3<Real>(scene.material.ka) * Vec3<Real>(scene.ambient);
+    for (const PointLight& light : scene.lights) {
+        const CameraLight<Real> camera_light{Vec3<Real>(frame.camera_from_world(light.position)),
+                                             Vec3<Real>(light.intensity)};
+        rig.lights.push_back(camera_light);
+        if (light.intensity != glm::vec3(0.0f)) rig.active_lights.push_back(camera_light);
+    }
+}
+
+template <typename Real>
+void light_vertices(const PointShader<Real>& shader, std::vector<Varyings<Real>>& varyings,
+                    VertexStageMemory<Real>& memory) {
+    const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
+    if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
+    // Scratch per block, not per thread: which worker runs which block changes
+    // from frame to frame, and per-thread scratch would then allocate.
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+        LightVectorsAt<Real>& vectors = memory.block_vectors[block];
+        const std::size_t end = std::min(varyings.size(), (block + 1) * kLightingBlock);
+        for (std::size_t i = block * kLightingBlock; i != end; ++i) {
+            Varyings<Real>& v = varyings[i];
+            v.lit = shader(vectors, v.position, v.normal, v.color);
+        }
+    });
+}
+
+#define PHONGRAST_INSTANTIATE_VERTEX_STAGE(Real)                                                               \
+    template void transform_vertices<Real>(const Mesh&, const View&, bool, VertexStageMemory<Real>&,            \
+                                           TransformedVertices<Real>&, ProgressMonitor&);                       \
+    template void build_light_rig<Real>(const Scene&, const CameraFrame&, LightRig<Real>&);                     \
+    template void light_vertices<Real>(const PointShader<Real>&, std::vector<Varyings<Real>>&,                  \
+                                       VertexStageMemory<Real>&);
+PHONGRAST_INSTANTIATE_VERTEX_STAGE(float)
+PHONGRAST_INSTANTIATE_VERTEX_STAGE(double)
+#undef PHONGRAST_INSTANTIATE_VERTEX_STAGE
+
+}  // namespace phongrast::detail

@@ -1,0 +1,62 @@
+// The vertex stage (internal header): every vertex transformed to camera
+// space and projected to sample coordinates, the lights moved to camera
+// space, and, for Gouraud with exact light vectors, every vertex lit.
+#ifndef PHONGRAST_SRC_VERTEX_STAGE_HPP
+#define PHONGRAST_SRC_VERTEX_STAGE_HPP
+
+#include <cstdint>
+#include <vector>
+
+#include "clipping.hpp"
+#include "normals_scratch.hpp"
+#include "phongrast/render.hpp"
+#include "progress_monitor.hpp"
+#include "shading.hpp"
+#include "view.hpp"
+
+namespace phongrast::detail {
+
+/// The vertex stage's output, indexed like Mesh::positions.
+template <typename Real>
+struct TransformedVertices {
+    std::vector<double> camera_depth;     ///< z_c (camera space), > 0 in front of the eye
+    std::vector<double> column, row;      ///< sample coordinates; NaN for a vertex not in front of the eye
+    std::vector<Varyings<Real>> varyings; ///< camera-space position and normal, colour, lit colour
+
+    /// The seed's border rule: in front of the eye and inside the image, judged
+    /// at the unshifted vertex whatever the sample offset.
+    bool inside_image(std::uint32_t vertex, const View& view) const {
+        const double c = column[vertex] + view.sample_offset.x, r = row[vertex] + view.sample_offset.y;
+        return camera_depth[vertex] > 0.0 && c >= 0.0 && c <= view.frame.columns && r >= 0.0 &&
+               r <= view.frame.rows;
+    }
+};
+
+/// The vertex stage's scratch, kept from frame to frame.
+template <typename Real>
+struct VertexStageMemory {
+    NormalsScratch normals_scratch;
+    std::vector<glm::vec3> normals;  ///< calculated when the mesh has none
+    std::vector<LightVectorsAt<Real>> block_vectors;  ///< one per block of vertices lit
+};
+
+/// Transforms and projects every vertex; computes normals when the mesh has
+/// none and `need_normals` (an ambient-only scene never looks at one).
+/// Reports progress, and stops early when the render is cancelled.
+template <typename Real>
+void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, VertexStageMemory<Real>& memory,
+                        TransformedVertices<Real>& out, ProgressMonitor& progress);
+
+/// The lights in camera space, those with zero intensity left out of the active ones.
+template <typename Real>
+void build_light_rig(const Scene& scene, const CameraFrame& frame, LightRig<Real>& rig);
+
+/// Gouraud with exact light vectors: each vertex's colour does not depend on
+/// the triangle, so it is lit once, into Varyings::lit, and shared.
+template <typename Real>
+void light_vertices(const PointShader<Real>& shader, std::vector<Varyings<Real>>& varyings,
+                    VertexStageMemory<Real>& memory);
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_VERTEX_STAGE_HPP

@@ -1,0 +1,112 @@
+// The batch manifest: the three kinds of job, settings, output names, and every
+// bad line stopping the batch with a message naming the line and the field.
+#include <catch2/catch.hpp>
+
+#include "batch_manifest.hpp"
+#include "phongrast/io/error.hpp"
+
+using namespace phongrast::cli;
+
+namespace {
+
+Manifest parse(const std::string& text, const JobSettings& defaults = {}) {
+    return parse_manifest(text, "m.jsonl", "/data", defaults);
+}
+
+/// The message of the error that parsing `text` raises ("" if none).
+std::string error_of(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const phongrast::io::FileError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("a manifest holds scene files, inline scenes and turntables, paths relative to its folder") {
+    const Manifest manifest = parse(
+        "{\"scene\": \"figures/knot.json\"}\n"
+        "\n"
+        "{\"scene\": {\"mesh\": \"knot.obj\"}, \"shader\": \"gouraud\"}\n"
+        "{\"mesh\": \"meshes/chair.obj\", \"views\": 12, \"elevation\": 20, \"size\": \"64x32\", \"samples\": 2}\n");
+    REQUIRE(manifest.jobs.size() == 3);
+    CHECK(manifest.jobs[0].kind == JobKind::scene_file);
+    CHECK(manifest.jobs[0].path == "/data/figures/knot.json");
+    CHECK(manifest.jobs[0].outputs == std::vector<std::string>{"knot.png"});
+    CHECK(manifest.jobs[1].kind == JobKind::inline_scene);
+    CHECK(manifest.jobs[1].line == 3);  // the blank line counts
+    CHECK(manifest.jobs[1].folder == "/data");
+    CHECK(manifest.jobs[1].settings.shader == "gouraud");
+    CHECK(manifest.jobs[1].outputs == std::vector<std::string>{"line-3.png"});
+    const BatchJob& turntable = manifest.jobs[2];
+    CHECK(turntable.kind == JobKind::mesh);
+    CHECK(turntable.path == "/data/meshes/chair.obj");
+    CHECK(turntable.views == 12);
+    CHECK(turntable.elevation == 20.0);
+    CHECK(turntable.settings.size == "64x32");
+    CHECK(turntable.settings.samples == 2);
+    REQUIRE(turntable.outputs.size() == 12);
+    CHECK(turntable.outputs.front() == "chair-00.png");
+    CHECK(turntable.outputs.back() == "chair-11.png");
+}
+
+TEST_CASE("command-line settings fill what a line leaves out, and a line's own win") {
+    JobSettings defaults;
+    defaults.size = "32x32";
+    defaults.shader = "flat";
+    defaults.samples = 3;
+    const Manifest manifest = parse("{\"mesh\": \"a.obj\"}\n{\"mesh\": \"b.obj\", \"size\": \"8x8\", \"samples\": 1}\n",
+                                    defaults);
+    CHECK(manifest.jobs[0].settings.size == "32x32");
+    CHECK(manifest.jobs[0].settings.shader == "flat");
+    CHECK(manifest.jobs[0].settings.samples == 3);
+    CHECK(manifest.jobs[1].settings.size == "8x8");
+    CHECK(manifest.jobs[1].settings.shader == "flat");
+    CHECK(manifest.jobs[1].settings.samples == 1);
+}
+
+TEST_CASE("output patterns: {name}, {line}, {view} padded to the last view, {view:N}, subfolders, EXR") {
+    CHECK(expand_output_pattern("{name}-{view}.png", "cup", 4, 7, 100) == "cup-07.png");
+    CHECK(expand_output_pattern("{name}-{view}.png", "cup", 4, 7, 8) == "cup-7.png");
+    CHECK(expand_output_pattern("a/{line}/{view:4}.exr", "cup", 12, 7, 8) == "a/12/0007.exr");
+    CHECK_THROWS_WITH(expand_output_pattern("{colour}.png", "cup", 1, 0, 1),
+                      Catch::Contains("unknown placeholder {colour}"));
+    CHECK_THROWS_WITH(expand_output_pattern("{name.png", "cup", 1, 0, 1), Catch::Contains("'{' without '}'"));
+    const Manifest manifest = parse("{\"mesh\": \"cup.obj\", \"views\": 2, \"output\": \"turn/./{name}_{view}.exr\"}");
+    CHECK(manifest.jobs[0].outputs == std::vector<std::string>{"turn/cup_0.exr", "turn/cup_1.exr"});
+}
+
+TEST_CASE("a bad manifest line names the line and the field") {
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\"}\n{\"mesh\": \"b.obj\",}\n"),
+               Catch::Matches("m\\.jsonl:2:[0-9]+: malformed JSON: .*"));
+    CHECK_THAT(error_of("[1, 2]"), Catch::StartsWith("m.jsonl:1: expected a JSON object"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"sampels\": 4}"), Catch::StartsWith("m.jsonl:1: /sampels: unknown field"));
+    CHECK_THAT(error_of("{\"views\": 4}"), Catch::StartsWith("m.jsonl:1: expected \"scene\""));
+    CHECK_THAT(error_of("{\"scene\": \"s.json\", \"mesh\": \"a.obj\"}"), Catch::Contains("both \"scene\" and \"mesh\""));
+    CHECK_THAT(error_of("{\"scene\": 3}"), Catch::StartsWith("m.jsonl:1: /scene: expected a non-empty string, got 3"));
+    CHECK_THAT(error_of("{\"scene\": \"s.json\", \"views\": 3}"), Catch::StartsWith("m.jsonl:1: /views: only a \"mesh\""));
+    CHECK_THAT(error_of("\n\n{\"mesh\": \"a.obj\", \"views\": 0}"),
+               Catch::StartsWith("m.jsonl:3: /views: expected a whole number from 1 to"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"views\": \"4\"}"), Catch::Contains("/views: expected a whole number"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"views\": 2.5}"), Catch::Contains("/views: expected a whole number"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"elevation\": 90}"), Catch::Contains("/elevation: expected degrees"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"shader\": \"toon\"}"), Catch::Contains("/shader: shader: unknown 'toon'"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"lighting\": \"glow\"}"), Catch::Contains("/lighting: lighting: unknown term"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"size\": \"12by8\"}"), Catch::Contains("/size: expected \"WxH\""));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"samples\": 17}"), Catch::Contains("/samples: expected a whole number from 1 to 16"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"mode\": \"fast\"}"), Catch::Contains("/mode: expected \"exact\" or \"seed\""));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"output\": \"a.jpg\"}"), Catch::Contains("/output: a.jpg: unknown image format"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"output\": \"/tmp/a.png\"}"), Catch::Contains("/output: '/tmp/a.png' must stay inside"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"output\": \"x/../../a.png\"}"), Catch::Contains("must stay inside"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"output\": \"{what}.png\"}"), Catch::Contains("/output: unknown placeholder"));
+}
+
+TEST_CASE("two jobs (or two views of one) writing the same image are an error naming both lines") {
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\"}\n{\"mesh\": \"other/a.obj\"}"),
+               Catch::StartsWith("m.jsonl:2: /output: 'a.png' is also written by line 1"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"views\": 3, \"output\": \"a.png\"}"),
+               Catch::Contains("also written by line 1 (add {view} to the pattern)"));
+    CHECK_NOTHROW(parse("{\"mesh\": \"a.obj\"}\n{\"mesh\": \"a.obj\", \"shader\": \"flat\", \"output\": \"a-flat.png\"}"));
+}

@@ -1,0 +1,87 @@
+// Turntable views of an automatically framed mesh: the first view is the
+// framing itself, the camera and lights turn together about the vertical
+// axis, and every vertex stays in the picture in every view.
+#include <catch2/catch.hpp>
+
+#include <glm/geometric.hpp>
+
+#include "batch_views.hpp"
+#include "io_test_files.hpp"
+#include "phongrast/io/error.hpp"
+#include "phongrast/camera.hpp"
+#include "phongrast/io/auto_scene.hpp"
+
+using namespace phongrast;
+using namespace phongrast::cli;
+
+namespace {
+
+/// A long thin box: its framing from the front differs from its framing from the side.
+Mesh long_box() {
+    Mesh mesh;
+    for (int i = 0; i < 8; ++i) mesh.positions.push_back({i & 1 ? 3.0 : -3.0, i & 2 ? 0.5 : -0.5, i & 4 ? 0.4 : -0.4});
+    mesh.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}};
+    return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("one view without elevation is exactly the framing of `render mesh.obj`") {
+    const Scene framed = io::frame_mesh(long_box(), 48, 64);
+    JobScenes scenes;
+    make_turntable(framed, 1, 0.0, scenes);
+    REQUIRE(scenes.cameras.size() == 1);
+    CHECK(scenes.cameras[0].eye == framed.camera.eye);
+    CHECK(scenes.cameras[0].sensor_height == framed.camera.sensor_height);
+    CHECK(scenes.cameras[0].sensor_width == framed.camera.sensor_width);
+    CHECK(scenes.lights[0][0].position == framed.lights[0].position);
+}
+
+TEST_CASE("turntable views circle the look-at point with the lights, every vertex in every picture") {
+    const Scene framed = io::frame_mesh(long_box(), 48, 64);
+    const glm::dvec3 centre = framed.camera.lookat;
+    const double distance = glm::length(framed.camera.eye - centre);
+    JobScenes scenes;
+    make_turntable(framed, 4, 30.0, scenes);
+    REQUIRE(scenes.cameras.size() == 4);
+    REQUIRE(scenes.lights.size() == 4);
+    const double key_light_angle = glm::dot(glm::normalize(scenes.lights[0][0].position - centre),
+                                            glm::normalize(scenes.cameras[0].eye - centre));
+    for (int view = 0; view < 4; ++view) {
+        INFO("view " << view);
+        const Camera& camera = scenes.cameras[static_cast<std::size_t>(view)];
+        const glm::dvec3 offset = camera.eye - centre;
+        CHECK(glm::length(offset) == Approx(distance));
+        CHECK(offset.y == Approx(distance * 0.5));  // 30 degrees up
+        CHECK(camera.lookat == centre);
+        // The key light keeps its place relative to the camera.
+        const glm::dvec3 light = scenes.lights[static_cast<std::size_t>(view)][0].position - centre;
+        CHECK(glm::dot(glm::normalize(light), glm::normalize(offset)) == Approx(key_light_angle));
+        CHECK(glm::length(light) == Approx(glm::length(framed.lights[0].position - centre)));
+        CHECK(camera.sensor_height == scenes.cameras[0].sensor_height);  // the same scale in every view
+        const CameraFrame frame = make_camera_frame(camera, 48, 64);
+        for (const glm::dvec3& vertex : framed.mesh.positions) {
+            const ProjectedPoint point = frame.project(vertex);
+            CHECK(point.column > 0.0);
+            CHECK(point.column < 64.0);
+            CHECK(point.row > 0.0);
+            CHECK(point.row < 48.0);
+        }
+    }
+    // A quarter turn looks at the box's end: the eye moved from +z to +x.
+    CHECK(scenes.cameras[1].eye.x - centre.x == Approx(distance * std::cos(std::acos(-1.0) / 6.0)));
+    CHECK(scenes.cameras[1].eye.z - centre.z == Approx(0.0).margin(1e-9));
+}
+
+TEST_CASE("the last mesh is kept for the next job, and read again when the file changes") {
+    TemporaryFolder folder;
+    const std::string path = folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    LastMesh meshes;
+    CHECK(meshes.read(path).mesh.positions.size() == 3);
+    CHECK(meshes.read(path).mesh.positions.size() == 3);
+    folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+    CHECK(meshes.read(path).mesh.positions.size() == 4);
+    folder.write("m.obj", "v 0 0 0\nf 1 2 3\n");
+    CHECK_THROWS_AS(meshes.read(path), phongrast::io::FileError);
+    CHECK_THROWS_AS(meshes.read(folder.file("missing.obj")), phongrast::io::FileError);
+}
