@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
 
+// The baseline kernels' weight helpers (span_weights, sample_weights): the same operations as the fill.
+#include "fill_kernels.hpp"
 #include "phongrast/lighting.hpp"
 
 namespace phongrast::detail {
@@ -29,7 +31,7 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
                     std::uint32_t source, int row_begin, int row_end, AovSamples& out) {
     const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2);
     Real inverse_depth[3];
-    for (int i = 0; i < 3; ++i) inverse_depth[i] = Real(1) / draw.depth[i];
+    inverse_depths(draw, inverse_depth);
     glm::vec3 flat_normal(0.0f);
     if (planes.normal && in.shader == Shader::flat) {
         const Triangle& tri = (*in.triangles)[source];
@@ -41,28 +43,14 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
     const std::size_t columns = static_cast<std::size_t>(out.columns);
     for_each_covered_span(draw.coverage, row_begin, row_end,
                           [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {
-        Real q[3], dq[3];  // screen-space weights, divided by depth when perspective-correct (as the fill)
-        for (int i = 0; i < 3; ++i) {
-            q[i] = static_cast<Real>(e[i]) * inverse_area;
-            dq[i] = static_cast<Real>(step[i]) * inverse_area;
-            if constexpr (Perspective) {
-                q[i] *= inverse_depth[i];
-                dq[i] *= inverse_depth[i];
-            }
-        }
+        Real q[3], dq[3];  // as the fill computes them
+        span_weights<Real, Perspective>(e, step, inverse_area, inverse_depth, q, dq);
         const std::size_t row_start = static_cast<std::size_t>(row) * columns;
         for (int k = 0; k < count; ++k) {
             const std::size_t index = row_start + static_cast<std::size_t>(first_column + k);
             out.covered[index] = 1;
-            Real w[3] = {q[0] + dq[0] * static_cast<Real>(k), q[1] + dq[1] * static_cast<Real>(k),
-                         q[2] + dq[2] * static_cast<Real>(k)};
-            Real fill_depth;
-            if constexpr (Perspective) {
-                fill_depth = Real(1) / (w[0] + w[1] + w[2]);
-                for (int i = 0; i < 3; ++i) w[i] *= fill_depth;
-            } else {
-                fill_depth = w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
-            }
+            Real w[3];
+            const Real fill_depth = sample_weights<Real, Perspective>(q, dq, k, draw, w);
             if (in.depth_buffer != nullptr && !(fill_depth == in.depth_buffer[index])) continue;
             if (planes.depth) {
                 // The surface's true depth: perspective-correct whatever the shading's weights.

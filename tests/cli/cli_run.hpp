@@ -10,6 +10,9 @@
 #include <sys/wait.h>
 
 #include "io_test_files.hpp"
+#include "phongrast/io/obj_file.hpp"
+#include "phongrast/io/scene_file.hpp"
+#include "phongrast/render.hpp"
 
 struct Run {
     int status = -1;
@@ -34,6 +37,16 @@ inline Run run_cli(const TemporaryFolder& folder, const std::string& arguments) 
     run.out = read_text(folder.file("stdout.txt"));
     run.err = read_text(folder.file("stderr.txt"));
     return run;
+}
+
+/// The scene a scene file describes, loaded by the library as the program does
+/// (its mesh, and its material resolved from the scene, the MTL and the defaults).
+inline phongrast::Scene load_scene_with_library(const std::string& scene_path) {
+    phongrast::io::SceneFile file = phongrast::io::read_scene_file(scene_path);
+    phongrast::io::ObjFile obj = phongrast::io::read_obj(file.mesh_path);
+    file.scene.mesh = std::move(obj.mesh);
+    file.scene.material = phongrast::io::resolve_material(file.material, obj.material, nullptr);
+    return file.scene;
 }
 
 #endif  // PHONGRAST_TESTS_CLI_CLI_RUN_HPP

@@ -27,15 +27,13 @@ namespace {
 
 const std::string default_scene = PHONGRAST_DEFAULT_SCENE;
 
-RenderResult library_render(int size, const AovRequest& aovs) {
-    io::SceneFile file = io::read_scene_file(default_scene);
-    io::ObjFile obj = io::read_obj(file.mesh_path);
-    file.scene.mesh = std::move(obj.mesh);
-    file.scene.material = io::resolve_material(file.material, obj.material, nullptr);
-    file.scene.image.rows = file.scene.image.columns = size;
+RenderResult library_render(int size, const AovRequest& aovs, int samples = 1) {
+    Scene scene = load_scene_with_library(default_scene);
+    scene.image.rows = scene.image.columns = size;
     RenderOptions options = RenderOptions::exact();
     options.aovs = aovs;
-    return render(file.scene, options);
+    options.samples_per_axis = samples;
+    return render(scene, options);
 }
 
 // Every file in the folder with its contents.
@@ -119,15 +117,7 @@ TEST_CASE("render with transparent writes an RGBA PNG whose alpha is the coverag
     REQUIRE(input->spec().nchannels == 4);
     std::vector<std::uint8_t> rgba(64 * 64 * 4);
     REQUIRE(input->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, rgba.data()));
-    const RenderResult expected = [] {
-        io::SceneFile file = io::read_scene_file(default_scene);
-        file.scene.mesh = io::read_obj(file.mesh_path).mesh;
-        file.scene.image.rows = file.scene.image.columns = 64;
-        RenderOptions with_alpha = RenderOptions::exact();
-        with_alpha.samples_per_axis = 2;
-        with_alpha.aovs.alpha = true;
-        return render(file.scene, with_alpha);
-    }();
+    const RenderResult expected = library_render(64, AovRequest{false, false, false, true}, 2);
     int transparent = 0, opaque = 0, partial = 0;
     for (std::size_t p = 0; p < 64 * 64; ++p) {
         const float alpha = expected.aovs.alpha[p];

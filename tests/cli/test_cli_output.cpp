@@ -26,11 +26,7 @@ const std::string data_folder = PHONGRAST_CLI_DATA;
 
 /// The library's render of a scene file, as the program should produce it in exact mode.
 RenderResult render_with_library(const std::string& scene_path) {
-    io::SceneFile file = io::read_scene_file(scene_path);
-    io::ObjFile obj = io::read_obj(file.mesh_path);
-    file.scene.mesh = std::move(obj.mesh);
-    file.scene.material = io::resolve_material(file.material, obj.material, nullptr);
-    return render(file.scene, RenderOptions::exact());
+    return render(load_scene_with_library(scene_path), RenderOptions::exact());
 }
 
 }  // namespace
