@@ -63,13 +63,17 @@ int interrupt_after(const TemporaryFolder& folder, std::vector<std::string> argu
     }
     // Until the program has installed its handler (SigCgt in /proc lists caught signals), a SIGINT
     // would end it before main(): starting takes a while on a busy machine (shared libraries).
+    // Only after exec: before it, the child is this test process, whose Catch2 catches SIGINT too.
     const auto handler_installed = [child] {
+        std::error_code error;
+        const auto exe = std::filesystem::read_symlink("/proc/" + std::to_string(child) + "/exe", error);
+        if (error || exe != std::filesystem::canonical(PHONGRAST_CLI, error)) return false;
         std::ifstream status("/proc/" + std::to_string(child) + "/status");
         std::string line;
         while (std::getline(status, line)) {
-            if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (SIGINT - 1)) & 1;
+            if (line.rfind("SigCgt:", 0) == 0) return ((std::stoull(line.substr(7), nullptr, 16) >> (SIGINT - 1)) & 1) != 0;
         }
-        return 0ull;
+        return false;
     };
     for (int tries = 0; tries < 3000 && !handler_installed(); ++tries) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
