@@ -40,6 +40,16 @@ void add_scene_flags(CLI::App& command, SceneFlags& flags, const std::string& ou
     command.add_option("--samples", flags.samples, "Samples per pixel axis (1 = pixel centres; 4 = 16 samples)")
         ->check(CLI::Range(1, 16))
         ->capture_default_str();
+    command.add_option("--smooth", flags.smooth,
+                       "Which corners share a vertex normal: index (the contract: corners using the same vertex "
+                       "index) or position (corners at the same position, so seams of repeated vertices vanish)")
+        ->check(CLI::IsMember({"index", "position"}))
+        ->capture_default_str();
+    command.add_option("--crease", flags.crease,
+                       "Degrees: faces meeting at a sharper angle keep separate normals (30 keeps a cube a cube); "
+                       "180 smooths across every edge")
+        ->check(CLI::Range(0.0, 180.0))
+        ->capture_default_str();
     command.add_flag("-q,--quiet", flags.quiet, "Print nothing but errors");
 }
 

@@ -27,6 +27,8 @@ struct SceneFlags {
     double focal = 0.0;
     int threads = 0;
     int samples = 1;
+    std::string smooth = "index";  ///< which corners share a normal: "index" (the contract) or "position"
+    double crease = 180.0;         ///< degrees; sharper edges keep separate normals
     bool quiet = false;
     /// Reads a mesh file; empty: io::read_mesh. The batch command passes a
     /// reader that keeps the last mesh, for jobs that share it.

@@ -16,6 +16,8 @@ struct RenderCommand {
     SceneFlags scene;
     int repeat = 0;  ///< 0: one render, no warm-up
     std::string stats_json;
+    std::string aovs;          ///< --aov: "depth,normal,id,alpha" into one EXR
+    bool transparent = false;  ///< --transparent: PNG with alpha, background transparent
 };
 void add_render_command(CLI::App& app, RenderCommand& command);
 int run_render(const RenderCommand& command);

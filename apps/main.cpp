@@ -1,13 +1,14 @@
 // phongrast: render scene files and meshes from the command line.
 // Exit status: 0 on success, 2 for bad input or a bad command line (the
-// message names the file, line or field and what was expected), 1 for
-// anything unexpected.
+// message names the file, line or field and what was expected), 130 after
+// Ctrl-C (nothing written), 1 for anything unexpected.
 #include <exception>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/version.hpp"
 
@@ -40,11 +41,18 @@ int main(int argc, char** argv) {
         return 2;
     }
 
+    // render and sheet stop cleanly on Ctrl-C; batch keeps the default (its
+    // supervisor and workers end, and a re-run resumes from the log).
+    if (app.got_subcommand("render") || app.got_subcommand("sheet")) catch_interrupts();
     try {
         if (app.got_subcommand("render")) return run_render(render);
         if (app.got_subcommand("sheet")) return run_sheet(sheet);
         if (app.got_subcommand("generate")) return run_generate(generate);
         if (app.got_subcommand("batch")) return run_batch(batch);
+    } catch (const phongrast::RenderCancelled&) {
+        // Only Ctrl-C cancels here; every file is written by rename, so none is half-written.
+        std::cerr << "\nphongrast: interrupted; no output written\n";
+        return kInterruptedExitStatus;
     } catch (const phongrast::io::FileError& error) {
         std::cerr << "phongrast: error: " << error.what() << '\n';
         return 2;

@@ -4,6 +4,8 @@
 #include <cstdio>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
+#include "phongrast/io/aov_file.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/text_file.hpp"
 #include "report.hpp"
@@ -33,12 +35,35 @@ void add_render_command(CLI::App& app, RenderCommand& command) {
         ->check(CLI::Range(1, 100000));
     render->add_option("--stats-json", command.stats_json,
                        "Write the render times and statistics to this JSON file");
+    render->add_option("--aov", command.aovs,
+                       "Extra outputs next to the colour, written into the one .exr as channels: depth (Z), normal "
+                       "(N.X, N.Y, N.Z), id (triangle index, unsigned), alpha (A); comma-separated, or all");
+    render->add_flag("--transparent", command.transparent,
+                     "Write a PNG with an alpha channel: the background transparent, edges partly so");
 }
 
 int run_render(const RenderCommand& command) {
     const Messages messages(command.scene.quiet);
     PreparedScene prepared = prepare_scene(command.scene, messages);
     const std::string output = choose_output(command.scene.output, prepared.name + ".png");
+    const io::ImageFormat format = io::image_format_for(output);
+    if (!command.aovs.empty()) {
+        try {
+            prepared.options.aovs = parse_aovs(command.aovs);
+        } catch (const std::invalid_argument& error) {
+            throw std::invalid_argument(std::string("--") + error.what());
+        }
+        if (format != io::ImageFormat::exr) {
+            throw std::invalid_argument("--aov: the extra outputs go into an EXR file; give -o NAME.exr, not " + output);
+        }
+    }
+    if (command.transparent) {
+        if (format != io::ImageFormat::png) {
+            throw std::invalid_argument("--transparent: writes a PNG with alpha; give -o NAME.png, not " + output);
+        }
+        prepared.options.aovs.alpha = true;
+    }
+    stop_if_interrupted();
 
     using Clock = std::chrono::steady_clock;
     Timing timing;
@@ -47,6 +72,8 @@ int run_render(const RenderCommand& command) {
     timing.warm_up = command.repeat > 0;
     // One Renderer for the warm-up and every timed run: after the first
     // frame the repeats allocate nothing, so --repeat times the steady state.
+    const bool show_bar = messages.shows_progress() && command.repeat == 0;
+    prepared.options.progress = progress_bar(show_bar, "rendering");
     Renderer renderer(prepared.options);
     if (timing.warm_up) {
         messages.progress(0, runs, "warm-up");
@@ -60,9 +87,17 @@ int run_render(const RenderCommand& command) {
         timing.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     }
     const RenderResult& result = *last;
+    clear_progress_bar(show_bar);
     messages.progress_done();
 
-    io::write_image(result.image, output);
+    stop_if_interrupted();
+    if (prepared.options.aovs.any() && format == io::ImageFormat::exr) {
+        io::write_exr_with_aovs(result.image, result.aovs, output);
+    } else if (command.transparent) {
+        io::write_png_with_alpha(result.image, result.aovs.alpha, prepared.scene.image.background, output);
+    } else {
+        io::write_image(result.image, output);
+    }
     messages.result(summary_line(result.stats, timing.seconds.back(), prepared.load_seconds));
     if (command.repeat > 0) {
         messages.result("render time over " + std::to_string(runs) + " runs after 1 warm-up: median " +

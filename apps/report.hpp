@@ -15,6 +15,8 @@ class Messages {
 public:
     explicit Messages(bool quiet);
     bool quiet() const { return quiet_; }
+    /// Whether progress is shown: stderr is a terminal and not --quiet.
+    bool shows_progress() const { return !quiet_ && terminal_; }
     void note(const std::string& text) const;     ///< stderr, "phongrast: ..."
     void warning(const std::string& text) const;  ///< stderr, "phongrast: warning: ..."
     void result(const std::string& text) const;   ///< stdout (where the image went, summaries)

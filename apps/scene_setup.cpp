@@ -10,6 +10,7 @@
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/scene_file.hpp"
+#include "phongrast/smooth_normals.hpp"
 
 namespace phongrast::cli {
 namespace {
@@ -104,6 +105,14 @@ Scene scene_from_file(io::SceneFile file, const std::string& input, const std::s
     return scene;
 }
 
+/// --smooth and --crease.
+NormalOptions normal_options(const SceneFlags& flags) {
+    NormalOptions options;
+    options.sharing = flags.smooth == "position" ? NormalSharing::position : NormalSharing::vertex_index;
+    options.crease_degrees = flags.crease;
+    return options;
+}
+
 /// Shader, lighting and camera overrides, the camera check, and the options.
 void apply_flags(PreparedScene& prepared, const SceneFlags& flags, const Messages& messages) {
     Scene& scene = prepared.scene;
@@ -121,6 +130,8 @@ void apply_flags(PreparedScene& prepared, const SceneFlags& flags, const Message
         scene.camera.sensor_height = flags.sensor[0];
         scene.camera.sensor_width = flags.sensor[1];
     }
+    const NormalOptions normals = normal_options(flags);
+    if (!normals.is_contract()) scene.mesh = with_normals(scene.mesh, normals);
     try {
         make_camera_frame(scene.camera, scene.image.rows, scene.image.columns);
     } catch (const std::invalid_argument& error) {
@@ -178,8 +189,10 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
     apply_flags(prepared, flags, messages);
 
     if (auto_framed && !messages.quiet()) {
-        messages.note("no scene file: framed " + mesh_path +
-                      " automatically. This scene file reproduces the picture:\n" +
+        std::ostringstream normal_flags;
+        if (!normal_options(flags).is_contract()) normal_flags << " with --smooth " << flags.smooth << " --crease " << flags.crease;
+        messages.note("no scene file: framed " + mesh_path + " automatically. This scene file reproduces the picture" +
+                      normal_flags.str() + ":\n" +
                       io::scene_to_json(prepared.scene, fs::absolute(mesh_path).lexically_normal().string()));
     }
     return prepared;

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/sheet.hpp"
@@ -57,6 +58,9 @@ int run_sheet(const SheetCommand& command) {
         }
     }
 
+    // No bar (the [figure/8] line shows progress); the callback lets Ctrl-C stop a figure mid-render.
+    prepared.options.progress = progress_bar(false, "");
+    stop_if_interrupted();
     std::vector<io::SheetCell> cells;
     RenderStats total;
     const int count = static_cast<int>(std::size(figures));
@@ -71,6 +75,7 @@ int run_sheet(const SheetCommand& command) {
     }
     messages.progress_done();
 
+    stop_if_interrupted();
     io::write_image(io::compose_sheet(cells, 4), output);
     if (!command.figures_folder.empty()) {
         for (int i = 0; i < count; ++i) {

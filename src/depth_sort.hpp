@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -70,7 +71,7 @@ inline void insertion_order(const std::vector<double>& depth, std::vector<std::u
 /// The first pass over the depths: the keys, the identity order, and every
 /// pass's digit counts per block.
 inline void make_keys(const std::vector<double>& depth, std::size_t blocks, std::vector<std::uint32_t>& order,
-                      DepthSortScratch& scratch) {
+                      DepthSortScratch& scratch, const std::function<void()>& poll) {
     const std::size_t n = depth.size();
     scratch.keys.resize(n);
     scratch.keys_scratch.resize(n);
@@ -86,12 +87,14 @@ inline void make_keys(const std::vector<double>& depth, std::size_t blocks, std:
             order[i] = static_cast<std::uint32_t>(i);
             for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(key >> (pass * kDigitBits)) & (kBuckets - 1)];
         }
+        if (poll) poll();
     });
 }
 
 /// One stable pass on the digit at `shift`. scratch.block_counts holds each
 /// block's counts of that digit; they become its cursors.
-inline void scatter_pass(int shift, std::size_t blocks, std::vector<std::uint32_t>& order, DepthSortScratch& scratch) {
+inline void scatter_pass(int shift, std::size_t blocks, std::vector<std::uint32_t>& order, DepthSortScratch& scratch,
+                         const std::function<void()>& poll) {
     // Bucket-major offsets: bucket b's slice, block after block.
     std::uint32_t start = 0;
     for (std::size_t b = 0; b < kBuckets; ++b) {
@@ -110,6 +113,7 @@ inline void scatter_pass(int shift, std::size_t blocks, std::vector<std::uint32_
             scratch.keys_scratch[slot] = keys[i];
             scratch.order_scratch[slot] = order[i];
         }
+        if (poll) poll();
     });
     scratch.keys.swap(scratch.keys_scratch);
     order.swap(scratch.order_scratch);
@@ -120,8 +124,10 @@ inline void scatter_pass(int shift, std::size_t blocks, std::vector<std::uint32_
 /// Fills `order` with the indices 0..n-1 ordered by descending depth, equal
 /// depths in index order: what std::stable_sort with `depth[a] > depth[b]`
 /// returns. Allocates nothing once `order` and `scratch` have held as many.
+/// `poll`, if given, is called after each block of work, from whichever
+/// thread did it (the renderer's progress reports).
 inline void farthest_first_order(const std::vector<double>& depth, std::vector<std::uint32_t>& order,
-                                 DepthSortScratch& scratch) {
+                                 DepthSortScratch& scratch, const std::function<void()>& poll = nullptr) {
     using namespace depth_sort;
     const std::size_t n = depth.size();
     order.resize(n);
@@ -130,7 +136,7 @@ inline void farthest_first_order(const std::vector<double>& depth, std::vector<s
         return;
     }
     const std::size_t blocks = (n + kBlock - 1) / kBlock;
-    make_keys(depth, blocks, order, scratch);
+    make_keys(depth, blocks, order, scratch, poll);
     scratch.block_counts.resize(blocks);
     bool first_pass_done = false;
     for (int pass = 0; pass < kPasses; ++pass) {
@@ -148,11 +154,12 @@ inline void farthest_first_order(const std::vector<double>& depth, std::vector<s
                 c.fill(0);
                 const auto [begin, end] = block_range(n, block);
                 for (std::size_t i = begin; i < end; ++i) ++c[(scratch.keys[i] >> shift) & (kBuckets - 1)];
+                if (poll) poll();
             });
         } else {
             for (std::size_t block = 0; block < blocks; ++block) scratch.block_counts[block] = scratch.first_counts[block][pass];
         }
-        scatter_pass(shift, blocks, order, scratch);
+        scatter_pass(shift, blocks, order, scratch, poll);
         first_pass_done = true;
     }
 }

@@ -108,12 +108,14 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
 
 template <typename Real>
 void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<Real>& plan, const Bins<Real>& bins,
-               int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats) {
+               int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats,
+               ProgressMonitor& progress) {
     image.rows = rows;
     image.columns = columns;
     image.pixels.assign(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns), scene.image.background);
     prepare_memory(plan, bins.bands, image.pixels.size(), memory);
     tbb::parallel_for(0, bins.bands, [&](int band) {
+        if (progress.cancelled()) return;
         FillTarget<Real> target{image, memory.depth_buffer, band * kBandRows, std::min(rows, (band + 1) * kBandRows),
                                 plan.depth_test, 0, 0};
         LightVectorsAt<Real>& vectors = memory.band_vectors[band];
@@ -124,7 +126,9 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
                 : fill_every_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors);
         memory.shaded[band] = target.samples;
         memory.replaced[band] = target.replaced;
+        progress.piece_done();
     });
+    progress.throw_if_cancelled();
     std::uint64_t shaded = 0;
     for (int band = 0; band < bins.bands; ++band) {
         stats.samples_covered += memory.covered[band];
@@ -141,7 +145,7 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
     template FillPlan<Real> plan_fill<Real>(const Scene&, const RenderOptions&, const EffectSet&,                \
                                             const LightRig<Real>&);                                              \
     template void fill_bins<Real>(const Scene&, const RenderOptions&, const FillPlan<Real>&, const Bins<Real>&,  \
-                                  int, int, FillMemory<Real>&, Image&, RenderStats&);
+                                  int, int, FillMemory<Real>&, Image&, RenderStats&, ProgressMonitor&);
 PHONGRAST_INSTANTIATE_FILL_DRIVER(float)
 PHONGRAST_INSTANTIATE_FILL_DRIVER(double)
 #undef PHONGRAST_INSTANTIATE_FILL_DRIVER

@@ -11,6 +11,7 @@
 #include "fill_types.hpp"
 #include "phongrast/image.hpp"
 #include "phongrast/render.hpp"
+#include "progress_monitor.hpp"
 
 namespace phongrast::detail {
 
@@ -47,10 +48,12 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
 
 /// Fills `image` (resized to rows x columns samples and cleared to the
 /// background) from the bins; adds the samples covered and shaded, the
-/// values replaced and, for Phong, the lighting done to `stats`.
+/// values replaced and, for Phong, the lighting done to `stats`. One band is
+/// one piece of `progress`'s current stage; a cancelled render stops early.
 template <typename Real>
 void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<Real>& plan, const Bins<Real>& bins,
-               int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats);
+               int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats,
+               ProgressMonitor& progress);
 
 }  // namespace phongrast::detail
 

@@ -21,7 +21,7 @@
 
 namespace phongrast::detail {
 
-/// One triangle ready to fill: 144 bytes in float on 64-bit targets. The varyings are not
+/// One triangle ready to fill: 144 bytes in float on 64-bit targets (`source` fills what was padding). The varyings are not
 /// copied: they stay in the mesh's vertex array (or, for the corners clipping
 /// creates, in the draw list's own storage), and the triangle points to them.
 template <typename Real>
@@ -31,6 +31,7 @@ struct DrawTriangle {
     Vec3<Real> lit[3];           ///< Gouraud: the lit corner colours; flat: the triangle's colour, thrice
     Real depth[3];               ///< z_c of the corners
     Vec3<Real> centroid;         ///< camera space, of the source triangle (seed light vectors)
+    std::uint32_t source;        ///< index of the mesh triangle it comes from (the id output)
 };
 
 /// The rows of the image (in samples) one task fills, and what it counts.

@@ -13,7 +13,8 @@ namespace phongrast {
 namespace detail {
 
 void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
-                            NormalsScratch& scratch, std::vector<glm::vec3>& normals) {
+                            NormalsScratch& scratch, std::vector<glm::vec3>& normals,
+                            const std::function<void()>& poll) {
     std::vector<glm::dvec3>& sums = scratch.sums;
     sums.assign(positions.size(), glm::dvec3(0.0));
     // For the fallback: each vertex's largest adjacent face (twice its area) and unit normal.
@@ -22,7 +23,10 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
     std::vector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
     largest_face_normal.assign(positions.size(), glm::dvec3(0.0));
 
-    for (const Triangle& triangle : triangles) {
+    constexpr std::size_t kPollEvery = 16384;
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        if (poll && t % kPollEvery == 0) poll();
+        const Triangle& triangle = triangles[t];
         const glm::dvec3& a = positions[triangle[0]];
         const glm::dvec3& b = positions[triangle[1]];
         const glm::dvec3& c = positions[triangle[2]];
@@ -42,6 +46,7 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
 
     normals.resize(positions.size());
     for (std::size_t vertex = 0; vertex < positions.size(); ++vertex) {
+        if (poll && vertex % kPollEvery == 0) poll();
         glm::dvec3 normal = safe_normalize<double>(sums[vertex]);
         // A sum that is tiny relative to its largest face means opposite faces
         // cancelled (two-sided sheet): its direction is rounding noise.

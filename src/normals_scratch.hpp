@@ -3,6 +3,7 @@
 #ifndef PHONGRAST_SRC_NORMALS_SCRATCH_HPP
 #define PHONGRAST_SRC_NORMALS_SCRATCH_HPP
 
+#include <functional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -18,9 +19,11 @@ struct NormalsScratch {
     std::vector<glm::dvec3> largest_face_normal;
 };
 
-/// calculate_normals(positions, triangles), written into `normals`.
+/// calculate_normals(positions, triangles), written into `normals`. `poll`,
+/// if given, is called every few thousand triangles (the renderer's progress reports).
 void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
-                            NormalsScratch& scratch, std::vector<glm::vec3>& normals);
+                            NormalsScratch& scratch, std::vector<glm::vec3>& normals,
+                            const std::function<void()>& poll = nullptr);
 
 }  // namespace phongrast::detail
 

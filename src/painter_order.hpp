@@ -8,6 +8,7 @@
 
 #include "depth_sort.hpp"
 #include "phongrast/mesh.hpp"
+#include "progress_monitor.hpp"
 
 namespace phongrast::detail {
 
@@ -19,8 +20,9 @@ struct PainterOrderMemory {
 
 /// Fills `order` with the triangle indices farthest first by the mean z_c
 /// (camera space) of their three vertices; equal depths keep mesh order.
+/// Reports progress through `progress`.
 void painter_order(const std::vector<Triangle>& triangles, const std::vector<double>& camera_depth,
-                   PainterOrderMemory& memory, std::vector<std::uint32_t>& order);
+                   PainterOrderMemory& memory, std::vector<std::uint32_t>& order, ProgressMonitor& progress);
 
 }  // namespace phongrast::detail
 

@@ -11,14 +11,14 @@ namespace phongrast::detail {
 
 template <typename Real>
 void render_pass(const Scene& scene, const RenderOptions& options, int rows, int columns, glm::dvec2 sample_offset,
-                 FrameMemory<Real>& memory, RenderStats& stats, Image& image) {
+                 FrameMemory<Real>& memory, RenderStats& stats, const PassOutput& out, ProgressMonitor& progress) {
     const View view(scene.camera, rows, columns, sample_offset);
     const EffectSet effects = find_effects(scene);
     stats.effects = effects;
 
     // Vertex stage.
-    const bool need_normals = effects.normals || !options.specialize_effects;
-    transform_vertices(scene.mesh, view, need_normals, memory.vertex_stage, memory.vertices);
+    const bool need_normals = effects.normals || !options.specialize_effects || out.aov_planes.normal;
+    transform_vertices(scene.mesh, view, need_normals, memory.vertex_stage, memory.vertices, progress);
     const HiddenBackFaces cull = back_faces_to_cull(scene, options, view, memory.vertices);
     stats.back_faces_culled = cull != HiddenBackFaces::unknown;
     build_light_rig(scene, view.frame, memory.rig);
@@ -30,19 +30,29 @@ void render_pass(const Scene& scene, const RenderOptions& options, int rows, int
                                stats);
     }
 
-    painter_order(scene.mesh.triangles, memory.vertices.camera_depth, memory.painter, memory.order);
+    painter_order(scene.mesh.triangles, memory.vertices.camera_depth, memory.painter, memory.order, progress);
 
     const SetupInput<Real> setup{scene, options, view, memory.vertices, cull, point_shader, fill_plan.setup};
-    set_up_triangles(setup, memory.order, memory.draws, stats);
+    set_up_triangles(setup, memory.order, memory.draws, stats, progress);
 
     bin_draws(memory.draws, rows, memory.binning, memory.bins);
 
-    fill_bins(scene, options, fill_plan, memory.bins, rows, columns, memory.fill, image, stats);
+    progress.begin_stage(0.4, out.aov_planes.any() ? 0.9 : 1.0, static_cast<std::size_t>(memory.bins.bands));
+    fill_bins(scene, options, fill_plan, memory.bins, rows, columns, memory.fill, out.image, stats, progress);
+
+    if (out.aov_planes.any()) {
+        out.aovs.reset(rows, columns, out.aov_planes);
+        const AovPassInput<Real> aov_input{&memory.bins, scene.shader,
+                                           options.interpolation == Interpolation::perspective_correct,
+                                           fill_plan.depth_test ? memory.fill.depth_buffer.data() : nullptr,
+                                           &scene.mesh.triangles, &memory.vertices.varyings, &view.frame};
+        run_aov_pass(aov_input, out.aov_planes, out.aovs, progress);
+    }
 }
 
 template void render_pass<float>(const Scene&, const RenderOptions&, int, int, glm::dvec2, FrameMemory<float>&,
-                                 RenderStats&, Image&);
+                                 RenderStats&, const PassOutput&, ProgressMonitor&);
 template void render_pass<double>(const Scene&, const RenderOptions&, int, int, glm::dvec2, FrameMemory<double>&,
-                                  RenderStats&, Image&);
+                                  RenderStats&, const PassOutput&, ProgressMonitor&);
 
 }  // namespace phongrast::detail

@@ -8,9 +8,11 @@
 
 #include <glm/vec2.hpp>
 
+#include "aov_pass.hpp"
 #include "binning.hpp"
 #include "fill_driver.hpp"
 #include "painter_order.hpp"
+#include "progress_monitor.hpp"
 #include "phongrast/render.hpp"
 #include "shading.hpp"
 #include "triangle_setup.hpp"
@@ -34,12 +36,21 @@ struct FrameMemory {
     FillMemory<Real> fill;
 };
 
+/// What one render pass writes: the image, and the extra outputs `aov_planes`
+/// asks for (none: the pass does no work for them).
+struct PassOutput {
+    Image& image;
+    const AovRequest& aov_planes;
+    AovSamples& aovs;
+};
+
 /// Renders `scene` at rows x columns samples, each sample `sample_offset`
-/// pixels from its pixel's centre, into `image` (its memory reused); adds
-/// this pass's counts to `stats`.
+/// pixels from its pixel's centre, into `out` (its memory reused); adds
+/// this pass's counts to `stats`. Reports progress; throws RenderCancelled
+/// when the callback asks to stop.
 template <typename Real>
 void render_pass(const Scene& scene, const RenderOptions& options, int rows, int columns, glm::dvec2 sample_offset,
-                 FrameMemory<Real>& memory, RenderStats& stats, Image& image);
+                 FrameMemory<Real>& memory, RenderStats& stats, const PassOutput& out, ProgressMonitor& progress);
 
 }  // namespace phongrast::detail
 

@@ -9,8 +9,10 @@
 
 #include <tbb/task_arena.h>
 
+#include "aov_pass.hpp"
 #include "phongrast/render.hpp"
 #include "pipeline.hpp"
+#include "progress_monitor.hpp"
 #include "resolve.hpp"
 #include "validation.hpp"
 
@@ -25,7 +27,12 @@ struct RendererState final : PassRenderer {
     ResolveImages resolve_images;
     FrameMemory<float> single;
     FrameMemory<double> twice;
-    const Scene* scene = nullptr;  ///< the scene being rendered, during render()
+    AovSamples aov_samples;  ///< one pass's extra outputs per sample, before their resolve into result.aovs
+    // During render():
+    const Scene* scene = nullptr;          ///< the scene being rendered
+    ProgressMonitor* progress = nullptr;   ///< its progress reports
+    AovRequest aov_planes;                 ///< the planes each pass fills (none unless asked for)
+    int passes = 1, passes_done = 0;       ///< render passes of this frame (rotated grid: one per sample)
 
     /// One arena per thread count asked for, kept: switching thread counts between frames allocates nothing either.
     tbb::task_arena& arena_for(int threads) {
@@ -38,21 +45,35 @@ struct RendererState final : PassRenderer {
     }
 
     void render_pass(int rows, int columns, glm::dvec2 sample_offset, RenderStats& stats, Image& image) override {
+        progress->set_pass(passes_done++, passes);
+        const PassOutput out{image, aov_planes, aov_samples};
         if (options.precision == Precision::double_float) {
-            detail::render_pass(*scene, options, rows, columns, sample_offset, twice, stats, image);
+            detail::render_pass(*scene, options, rows, columns, sample_offset, twice, stats, out, *progress);
         } else {
-            detail::render_pass(*scene, options, rows, columns, sample_offset, single, stats, image);
+            detail::render_pass(*scene, options, rows, columns, sample_offset, single, stats, out, *progress);
         }
+        // A pass has samples_per_axis samples per pixel axis (ordered grid) or one (rotated grid, no supersampling).
+        if (aov_planes.any()) resolve_aovs(aov_samples, rows / scene->image.rows, aov_planes, result.aovs);
     }
 
     void render(const Scene& rendered) {
         const auto start = std::chrono::steady_clock::now();
         validate_render_request(rendered, options);
+        ProgressMonitor monitor(options.progress);
+        const int factor = options.samples_per_axis;
         scene = &rendered;
+        progress = &monitor;
+        aov_planes = options.aovs.any() ? sample_planes_for(options.aovs, factor) : AovRequest{};
+        passes = factor > 1 && options.sample_pattern == SamplePattern::rotated_grid ? factor * factor : 1;
+        passes_done = 0;
+        reset_aov_planes(rendered.image.rows, rendered.image.columns, aov_planes, result.aovs);
         result.stats = RenderStats{};
         result.stats.triangles_in = rendered.mesh.triangles.size();
         arena_for(options.threads).execute([&] { render_and_resolve(rendered, options, *this, resolve_images, result); });
         scene = nullptr;
+        progress = nullptr;
+        if (aov_planes.any()) finish_aovs(options.aovs, factor * factor, result.aovs);
+        monitor.finish();
         result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 };

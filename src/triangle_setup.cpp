@@ -42,6 +42,7 @@ public:
     // Both paths, whole and clipped, make their pieces with set_up_piece()
     // and are counted and flat-lit here.
     void run(std::uint32_t source) {
+        source_ = source;
         const Triangle& tri = in_.scene.mesh.triangles[source];
         if (in_.cull != HiddenBackFaces::unknown && faces_away(in_.scene.mesh, in_.scene.camera.eye, in_.cull, tri)) {
             ++counts_.culled;
@@ -112,6 +113,7 @@ private:
             draw.depth[i] = static_cast<Real>(from.depth);
         }
         draw.centroid = centroid;
+        draw.source = source_;
         outcome.drawn = true;
         return true;
     }
@@ -211,6 +213,7 @@ private:
         return 3;
     }
 
+    std::uint32_t source_ = 0;  ///< the mesh triangle being set up
     const SetupInput<Real>& in_;
     const TransformedVertices<Real>& vertices_;
     std::vector<DrawTriangle<Real>>& out_;
@@ -251,7 +254,7 @@ void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::v
 
 template <typename Real>
 void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint32_t>& order, DrawList<Real>& draws,
-                      RenderStats& stats) {
+                      RenderStats& stats, ProgressMonitor& progress) {
     const std::size_t chunks = (order.size() + kSetupChunk - 1) / kSetupChunk;
     if (draws.chunk_draws.size() < chunks) draws.chunk_draws.resize(chunks);
     if (draws.chunk_clip_vertices.size() < chunks) draws.chunk_clip_vertices.resize(chunks);
@@ -259,7 +262,9 @@ void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint
     draws.chunk_counts.assign(chunks, SetupCounts{});
     draws.chunks = chunks;
     const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
+    progress.begin_stage(0.15, 0.4, chunks);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+        if (progress.cancelled()) return;
         const std::size_t begin = chunk * kSetupChunk;
         const std::size_t end = std::min(order.size(), begin + kSetupChunk);
         std::vector<DrawTriangle<Real>>& out = draws.chunk_draws[chunk];
@@ -272,7 +277,9 @@ void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint
             if (k + kPrefetchAhead < end) prefetch_vertices(input.vertices, triangles[order[k + kPrefetchAhead]]);
             setup.run(order[k]);
         }
+        progress.piece_done();
     });
+    progress.throw_if_cancelled();
     for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
         add_counts(draws.chunk_counts[chunk], stats);
         count_term_evaluations(input.scene, input.options, input.shader.effects, draws.chunk_counts[chunk].lit_points,
@@ -282,7 +289,7 @@ void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint
 
 #define PHONGRAST_INSTANTIATE_SETUP(Real)                                                                       \
     template void set_up_triangles<Real>(const SetupInput<Real>&, const std::vector<std::uint32_t>&,            \
-                                         DrawList<Real>&, RenderStats&);                                        \
+                                         DrawList<Real>&, RenderStats&, ProgressMonitor&);                      \
     template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, std::vector<DrawTriangle<Real>>&, \
                                         ClipVertexStore<Real>&, SetupCounts&, LightVectorsAt<Real>&);
 PHONGRAST_INSTANTIATE_SETUP(float)

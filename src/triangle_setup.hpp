@@ -69,10 +69,11 @@ struct SetupInput {
 };
 
 /// Sets up every triangle of `order` (painter's order) into `draws` and adds
-/// the triangle counts and the lighting done to `stats`.
+/// the triangle counts and the lighting done to `stats`. Reports progress,
+/// and stops early when the render is cancelled.
 template <typename Real>
 void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint32_t>& order, DrawList<Real>& draws,
-                      RenderStats& stats);
+                      RenderStats& stats, ProgressMonitor& progress);
 
 /// Sets up mesh triangle `source`: appends its draw triangles (none, one, or
 /// one per piece of its clipped polygon) to `out` and counts it in `counts`.

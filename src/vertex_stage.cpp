@@ -27,10 +27,12 @@ glm::dvec2 View::sample_from_camera(const glm::dvec3& point_camera) const {
 
 template <typename Real>
 void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, VertexStageMemory<Real>& memory,
-                        TransformedVertices<Real>& out) {
+                        TransformedVertices<Real>& out, ProgressMonitor& progress) {
     const std::size_t count = mesh.positions.size();
     if (need_normals && mesh.normals.empty()) {
-        calculate_normals_into(mesh.positions, mesh.triangles, memory.normals_scratch, memory.normals);
+        progress.begin_stage(0.0, 0.05, 1);
+        calculate_normals_into(mesh.positions, mesh.triangles, memory.normals_scratch, memory.normals,
+                               progress.poll_function());
     }
     const std::vector<glm::vec3>& normals = mesh.normals.empty() ? memory.normals : mesh.normals;
     out.camera_depth.resize(count);
@@ -38,8 +40,10 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
     out.row.resize(count);
     out.varyings.resize(count);
     const CameraFrame& frame = view.frame;
+    progress.begin_stage(0.05, 0.1, (count + kTransformBlock - 1) / kTransformBlock);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kTransformBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
+        if (progress.cancelled()) return;
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
             const glm::dvec3 camera = frame.camera_from_world(mesh.positions[i]);
             out.camera_depth[i] = camera.z;
@@ -58,7 +62,9 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
             v.color = mesh.colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(mesh.colors[i]);
             v.lit = Vec3<Real>(Real(0));
         }
+        progress.piece_done();
     });
+    progress.throw_if_cancelled();
 }
 
 template <typename Real>
@@ -96,7 +102,7 @@ void light_vertices(const PointShader<Real>& shader, std::vector<Varyings<Real>>
 
 #define PHONGRAST_INSTANTIATE_VERTEX_STAGE(Real)                                                               \
     template void transform_vertices<Real>(const Mesh&, const View&, bool, VertexStageMemory<Real>&,            \
-                                           TransformedVertices<Real>&);                                         \
+                                           TransformedVertices<Real>&, ProgressMonitor&);                       \
     template void build_light_rig<Real>(const Scene&, const CameraFrame&, LightRig<Real>&);                     \
     template void light_vertices<Real>(const PointShader<Real>&, std::vector<Varyings<Real>>&,                  \
                                        VertexStageMemory<Real>&);

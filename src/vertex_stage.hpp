@@ -10,6 +10,7 @@
 #include "clipping.hpp"
 #include "normals_scratch.hpp"
 #include "phongrast/render.hpp"
+#include "progress_monitor.hpp"
 #include "shading.hpp"
 #include "view.hpp"
 
@@ -41,9 +42,10 @@ struct VertexStageMemory {
 
 /// Transforms and projects every vertex; computes normals when the mesh has
 /// none and `need_normals` (an ambient-only scene never looks at one).
+/// Reports progress, and stops early when the render is cancelled.
 template <typename Real>
 void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, VertexStageMemory<Real>& memory,
-                        TransformedVertices<Real>& out);
+                        TransformedVertices<Real>& out, ProgressMonitor& progress);
 
 /// The lights in camera space, those with zero intensity left out of the active ones.
 template <typename Real>

@@ -32,7 +32,9 @@ struct SetUpOne {
         const pd::View view(scene.camera, 64, 64, glm::dvec2(0.0));
         const phongrast::EffectSet effects = pd::find_effects(scene);
         pd::VertexStageMemory<float> memory;
-        pd::transform_vertices(scene.mesh, view, true, memory, vertices);
+        const phongrast::ProgressCallback no_reports;
+        pd::ProgressMonitor progress(no_reports);
+        pd::transform_vertices(scene.mesh, view, true, memory, vertices, progress);
         pd::LightRig<float> rig;
         pd::build_light_rig(scene, view.frame, rig);
         const pd::PointShader<float> shader{&rig, effects, true};

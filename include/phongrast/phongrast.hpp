@@ -7,6 +7,7 @@
 #include "phongrast/lighting.hpp"
 #include "phongrast/mesh.hpp"
 #include "phongrast/render.hpp"
+#include "phongrast/smooth_normals.hpp"
 #include "phongrast/version.hpp"
 
 #endif  // PHONGRAST_PHONGRAST_HPP

@@ -13,10 +13,12 @@
 
 #include <glm/vec3.hpp>
 
+#include "phongrast/aov.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/image.hpp"
 #include "phongrast/lighting.hpp"
 #include "phongrast/mesh.hpp"
+#include "phongrast/progress.hpp"
 
 namespace phongrast {
 
@@ -99,6 +101,10 @@ struct RenderOptions {
     /// terms are on. Both give the same image bit for bit; false exists to prove
     /// that and to measure what specialisation saves.
     bool specialize_effects = true;
+    /// Extra planes to fill next to the colour (RenderResult::aovs); none by default.
+    AovRequest aovs;
+    /// Progress reports, and cancellation by returning false (progress.hpp). Empty: none.
+    ProgressCallback progress;
 
     /// Exactly the contract's three seed simplifications, nothing else.
     static RenderOptions seed();
@@ -179,10 +185,12 @@ const std::vector<RenderCounter>& render_counters();
 struct RenderResult {
     Image image;
     RenderStats stats;
+    AovPlanes aovs;  ///< the planes RenderOptions::aovs asked for, at the image's size
 };
 
 /// Renders a scene. Throws std::invalid_argument for an invalid camera, image
-/// size or mesh (the message names the field).
+/// size or mesh (the message names the field), and RenderCancelled when the
+/// progress callback asks to stop.
 RenderResult render(const Scene& scene, const RenderOptions& options = RenderOptions::exact());
 
 namespace detail {

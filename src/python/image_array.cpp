@@ -46,25 +46,40 @@ Image array_to_image(py::handle value, const std::string& name) {
 
 py::dict stats_to_dict(const RenderStats& stats) {
     py::dict d;
-    d["triangles_in"] = stats.triangles_in;
-    d["triangles_drawn"] = stats.triangles_drawn;
-    d["triangles_dropped"] = stats.triangles_dropped;
-    d["triangles_clipped"] = stats.triangles_clipped;
-    d["triangles_culled"] = stats.triangles_culled;
-    d["triangles_outside"] = stats.triangles_outside;
-    d["triangles_between_samples"] = stats.triangles_between_samples;
-    d["triangles_degenerate"] = stats.triangles_degenerate;
-    d["samples_covered"] = stats.samples_covered;
-    d["samples_shaded"] = stats.samples_shaded;
-    d["nonfinite_values_replaced"] = stats.nonfinite_values_replaced;
-    d["ambient_evaluations"] = stats.ambient_evaluations;
-    d["diffuse_evaluations"] = stats.diffuse_evaluations;
-    d["specular_evaluations"] = stats.specular_evaluations;
-    d["normal_interpolations"] = stats.normal_interpolations;
+    for (const RenderCounter& counter : render_counters()) d[counter.name] = stats.*counter.field;
     d["effects"] = to_string(stats.effects);
     d["back_faces_culled"] = stats.back_faces_culled;
     d["seconds"] = stats.seconds;
     return d;
+}
+
+namespace {
+
+/// An M x N (x 3 for vec3) array that takes over `values`.
+template <typename Value, typename Component>
+py::array plane_to_array(std::vector<Value>&& values, py::ssize_t rows, py::ssize_t columns) {
+    auto owned = std::make_unique<std::vector<Value>>(std::move(values));
+    auto* data = reinterpret_cast<Component*>(owned->data());
+    const py::capsule owner = owning_capsule(std::move(owned));
+    const auto item = static_cast<py::ssize_t>(sizeof(Component));
+    constexpr py::ssize_t channels = sizeof(Value) / sizeof(Component);
+    if (channels == 1) return py::array_t<Component>({rows, columns}, {columns * item, item}, data, owner);
+    return py::array_t<Component>({rows, columns, channels}, {columns * channels * item, channels * item, item}, data,
+                                  owner);
+}
+
+}  // namespace
+
+py::dict aovs_to_dict(AovPlanes&& aovs) {
+    py::dict planes;
+    const py::ssize_t rows = aovs.rows, columns = aovs.columns;
+    if (!aovs.depth.empty()) planes["depth"] = plane_to_array<float, float>(std::move(aovs.depth), rows, columns);
+    if (!aovs.normal.empty()) {
+        planes["normal"] = plane_to_array<glm::vec3, float>(std::move(aovs.normal), rows, columns);
+    }
+    if (!aovs.id.empty()) planes["id"] = plane_to_array<std::int32_t, std::int32_t>(std::move(aovs.id), rows, columns);
+    if (!aovs.alpha.empty()) planes["alpha"] = plane_to_array<float, float>(std::move(aovs.alpha), rows, columns);
+    return planes;
 }
 
 }  // namespace phongrast::python

@@ -28,7 +28,9 @@ const char* const option_keywords_doc = R"(Rendering keywords:
     precision: "single" (default) or "double"
     sample_pattern: "ordered" (default) or "rotated"
     overdraw: "auto" (default), "all" or "visible" (speed only; the same picture)
-    back_faces: "draw" (default, the contract) or "cull" (closed meshes seen from outside))";
+    back_faces: "draw" (default, the contract) or "cull" (closed meshes seen from outside)
+    aovs: extra outputs, "depth,normal,id,alpha" (any of them, or "all"); render and
+        Renderer.render then return (image, stats, planes), planes a dict of arrays)";
 
 static std::string keyword_text(const py::kwargs& keywords, const char* keyword, const std::string& fallback) {
     if (!keywords.contains(keyword)) return fallback;
@@ -38,8 +40,8 @@ static std::string keyword_text(const py::kwargs& keywords, const char* keyword,
 }
 
 RenderOptions options_from_keywords(const py::kwargs& keywords, const std::string& default_mode) {
-    static const char* const known[] = {"mode", "samples", "threads", "visibility", "precision",
-                                        "sample_pattern", "overdraw", "back_faces"};
+    static const char* const known[] = {"mode",     "samples",    "threads", "visibility", "precision",
+                                        "sample_pattern", "overdraw", "back_faces", "aovs"};
     for (const auto& item : keywords) {
         const std::string key = py::str(item.first);
         if (std::find(std::begin(known), std::end(known), key) == std::end(known)) {
@@ -66,6 +68,13 @@ RenderOptions options_from_keywords(const py::kwargs& keywords, const std::strin
         {{"auto", Overdraw::automatic}, {"all", Overdraw::shade_all}, {"visible", Overdraw::shade_visible}});
     options.back_faces = choose<BackFaces>(
         "back_faces", keyword_text(keywords, "back_faces", "draw"), {{"draw", BackFaces::draw}, {"cull", BackFaces::cull_when_hidden}});
+    if (keywords.contains("aovs")) {
+        try {
+            options.aovs = parse_aovs(keyword_text(keywords, "aovs", ""));
+        } catch (const std::invalid_argument& error) {
+            throw py::value_error(std::string("aovs: ") + error.what());
+        }
+    }
     return options;
 }
 

@@ -1,4 +1,4 @@
-// The Pythonic layer: Mesh, Scene, render, Renderer, read_image, write_image.
+// The Pythonic layer: Mesh, Scene, render, Renderer, read_image, write_image, read_aovs.
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -11,6 +11,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "image_array.hpp"
+#include "phongrast/io/aov_file.hpp"
 #include "phongrast/io/auto_scene.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
@@ -91,6 +92,9 @@ py::tuple render_with_stats(const PyScene& scene, const RenderOptions& options) 
         result = render(*keep, options);
     }
     py::dict stats = stats_to_dict(result.stats);
+    if (options.aovs.any()) {
+        return py::make_tuple(image_to_array(std::move(result.image)), stats, aovs_to_dict(std::move(result.aovs)));
+    }
     return py::make_tuple(image_to_array(std::move(result.image)), stats);
 }
 
@@ -115,12 +119,17 @@ struct PyRenderer {
         const std::shared_ptr<const Scene> keep = scene.scene;
         Image image;
         RenderStats stats;
+        AovPlanes aovs;
         {
             py::gil_scoped_release release;
             const std::lock_guard<std::mutex> lock(busy);
             const RenderResult& result = renderer.render(*keep);
-            image = result.image;  // the Renderer reuses its buffer for the next frame
+            image = result.image;  // the Renderer reuses its buffers for the next frame
             stats = result.stats;
+            aovs = result.aovs;
+        }
+        if (renderer.options().aovs.any()) {
+            return py::make_tuple(image_to_array(std::move(image)), stats_to_dict(stats), aovs_to_dict(std::move(aovs)));
         }
         return py::make_tuple(image_to_array(std::move(image)), stats_to_dict(stats));
     }
@@ -312,6 +321,14 @@ columns) frames a mesh automatically. Every field is a property.)");
     }, py::arg("image"), py::arg("path"),
        "Writes an M x N x 3 image: .png (8 bits, clamped to [0, 1], no gamma) or .exr (32-bit float), "
        "through a temporary file renamed into place.");
+    module.def("read_aovs", [](const std::string& path) {
+        Image image;
+        AovPlanes planes;
+        io::read_exr_with_aovs(path, image, planes);
+        return py::make_tuple(image_to_array(std::move(image)), aovs_to_dict(std::move(planes)));
+    }, py::arg("path"),
+       "Reads an EXR written with extra outputs (phongrast render --aov): (image, planes), planes a dict with "
+       "the depth, normal, id and alpha arrays the file holds, as render(..., aovs=...) returns them.");
 }
 
 }  // namespace phongrast::python

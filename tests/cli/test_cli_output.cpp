@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
+#include "cli_run.hpp"
 #include "io_test_files.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/obj_file.hpp"
@@ -23,38 +24,9 @@ namespace {
 
 const std::string data_folder = PHONGRAST_CLI_DATA;
 
-struct Run {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-/// Runs `phongrast ARGUMENTS` in `folder` and captures its exit status and output.
-Run run_cli(const TemporaryFolder& folder, const std::string& arguments) {
-    const std::string command = "cd '" + folder.file("") + "' && '" + std::string(PHONGRAST_CLI) + "' " + arguments +
-                                " > stdout.txt 2> stderr.txt";
-    const int raw = std::system(command.c_str());
-    Run run;
-    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    run.out = read_text(folder.file("stdout.txt"));
-    run.err = read_text(folder.file("stderr.txt"));
-    return run;
-}
-
 /// The library's render of a scene file, as the program should produce it in exact mode.
 RenderResult render_with_library(const std::string& scene_path) {
-    io::SceneFile file = io::read_scene_file(scene_path);
-    io::ObjFile obj = io::read_obj(file.mesh_path);
-    file.scene.mesh = std::move(obj.mesh);
-    file.scene.material = io::resolve_material(file.material, obj.material, nullptr);
-    return render(file.scene, RenderOptions::exact());
+    return render(load_scene_with_library(scene_path), RenderOptions::exact());
 }
 
 }  // namespace
@@ -207,4 +179,35 @@ TEST_CASE("generate writes a closed, outward-facing, coloured mesh, the one in a
     }
     CHECK(signed_volume > 1.0);  // counter-clockwise seen from outside
     CHECK(read_text(folder.file("knot.obj")) == read_text(data_folder + "/../../../assets/default.obj"));
+}
+
+TEST_CASE("render with smooth normals by position and a 30-degree crease draws a shared-vertex cube exactly like a cube with separate faces") {
+    TemporaryFolder folder;
+    std::string corners;
+    for (int i = 0; i < 8; ++i) corners += "v " + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " +
+                                           std::to_string((i >> 2) & 1) + "\n";
+    const int quads[6][4] = {{1, 3, 4, 2}, {5, 6, 8, 7}, {1, 2, 6, 5}, {3, 7, 8, 4}, {1, 5, 7, 3}, {2, 4, 8, 6}};
+    std::string shared = corners;
+    std::string faceted = corners;  // every face its own copies of its corners
+    for (int f = 0; f < 6; ++f) {
+        shared += "f " + std::to_string(quads[f][0]) + " " + std::to_string(quads[f][1]) + " " +
+                  std::to_string(quads[f][2]) + " " + std::to_string(quads[f][3]) + "\n";
+        for (int k = 0; k < 4; ++k) {
+            const int corner = quads[f][k] - 1;
+            faceted += "v " + std::to_string(corner & 1) + " " + std::to_string((corner >> 1) & 1) + " " +
+                       std::to_string((corner >> 2) & 1) + "\n";
+        }
+        const int base = 9 + 4 * f;
+        faceted += "f " + std::to_string(base) + " " + std::to_string(base + 1) + " " + std::to_string(base + 2) +
+                   " " + std::to_string(base + 3) + "\n";
+    }
+    folder.write("cube.obj", shared);
+    folder.write("faceted.obj", faceted);
+    const std::string common = " --shader gouraud --size 48x48 --eye 2.5,1.8,3.1 --quiet";
+    REQUIRE(run_cli(folder, "render cube.obj -o creased.exr --smooth position --crease 30" + common).status == 0);
+    REQUIRE(run_cli(folder, "render faceted.obj -o faceted.exr" + common).status == 0);
+    REQUIRE(run_cli(folder, "render cube.obj -o contract.exr" + common).status == 0);
+    const Image creased = io::read_image(folder.file("creased.exr"));
+    CHECK(creased.pixels == io::read_image(folder.file("faceted.exr")).pixels);
+    CHECK(creased.pixels != io::read_image(folder.file("contract.exr")).pixels);
 }

@@ -1,0 +1,62 @@
+// Extra outputs of a render next to the colour image ("arbitrary output
+// variables"): camera depth, shading normal, triangle id and coverage, each
+// computed only when asked for.
+#ifndef PHONGRAST_AOV_HPP
+#define PHONGRAST_AOV_HPP
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace phongrast {
+
+/// Which extra planes a render fills (RenderOptions::aovs). None by default:
+/// a render that asks for none does no work for them.
+struct AovRequest {
+    bool depth = false;   ///< camera depth z_c of the surface that paints the sample
+    bool normal = false;  ///< unit world-space shading normal there
+    bool id = false;      ///< index of the mesh triangle that paints the sample
+    bool alpha = false;   ///< covered fraction of the pixel's samples
+
+    bool any() const { return depth || normal || id || alpha; }
+    static AovRequest all() { return {true, true, true, true}; }
+};
+
+/// "depth,normal,id,alpha" (any subset, comma-separated, or "all"); throws
+/// std::invalid_argument naming an unknown entry and listing the valid ones.
+AovRequest parse_aovs(std::string_view text);
+std::string to_string(const AovRequest& request);
+
+/// The requested planes, row-major like Image::pixels (row 0 at the top);
+/// a plane that was not requested is empty.
+///
+/// Which sample a pixel reports: without supersampling, its centre. With
+/// samples_per_axis > 1, depth, normal and id come from the pixel's nearest
+/// covered sample (smallest depth; the first in sample order on a tie), so
+/// they always describe one real surface point, and alpha counts all samples.
+struct AovPlanes {
+    int rows = 0;
+    int columns = 0;
+    /// Camera depth z_c in world units, perspective-correct in every mode
+    /// (it is the surface's depth, not an interpolated attribute). In
+    /// painter's order the surface is the last one painted there; with the
+    /// depth buffer, the nearest. +infinity on the background.
+    std::vector<float> depth;
+    /// Unit world-space normal used for shading: interpolated with the
+    /// shading's weights and renormalised (Gouraud and Phong), or the
+    /// triangle's one normal for flat shading (its mean vertex normal,
+    /// normalised: what flat shading lights with). Zero on the background,
+    /// and where a surface has no normal (see calculate_normals).
+    std::vector<glm::vec3> normal;
+    /// Index into Mesh::triangles; -1 on the background.
+    std::vector<std::int32_t> id;
+    /// Covered fraction of the pixel's samples, from 0 to 1 (exact multiples of 1 / samples).
+    std::vector<float> alpha;
+};
+
+}  // namespace phongrast
+
+#endif  // PHONGRAST_AOV_HPP

@@ -1,0 +1,52 @@
+// Runs the phongrast executable in a test's folder and captures what it says.
+#ifndef PHONGRAST_TESTS_CLI_CLI_RUN_HPP
+#define PHONGRAST_TESTS_CLI_CLI_RUN_HPP
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+
+#include "io_test_files.hpp"
+#include "phongrast/io/obj_file.hpp"
+#include "phongrast/io/scene_file.hpp"
+#include "phongrast/render.hpp"
+
+struct Run {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+inline std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// Runs `phongrast ARGUMENTS` in `folder` and captures its exit status and output.
+inline Run run_cli(const TemporaryFolder& folder, const std::string& arguments) {
+    const std::string command = "cd '" + folder.file("") + "' && '" + std::string(PHONGRAST_CLI) + "' " + arguments +
+                                " > stdout.txt 2> stderr.txt";
+    const int raw = std::system(command.c_str());
+    Run run;
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    run.out = read_text(folder.file("stdout.txt"));
+    run.err = read_text(folder.file("stderr.txt"));
+    return run;
+}
+
+/// The scene a scene file describes, loaded by the library as the program does
+/// (its mesh, and its material resolved from the scene, the MTL and the defaults).
+inline phongrast::Scene load_scene_with_library(const std::string& scene_path) {
+    phongrast::io::SceneFile file = phongrast::io::read_scene_file(scene_path);
+    phongrast::io::ObjFile obj = phongrast::io::read_obj(file.mesh_path);
+    file.scene.mesh = std::move(obj.mesh);
+    file.scene.material = phongrast::io::resolve_material(file.material, obj.material, nullptr);
+    return file.scene;
+}
+
+#endif  // PHONGRAST_TESTS_CLI_CLI_RUN_HPP

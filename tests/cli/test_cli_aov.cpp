@@ -1,0 +1,164 @@
+// The program's extra outputs and interruption: --aov writes the library's
+// planes into one EXR, --transparent a PNG whose alpha is the coverage, and
+// Ctrl-C stops render and sheet with status 130 and the folder unchanged.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include <OpenImageIO/imageio.h>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cli_run.hpp"
+#include "phongrast/io/aov_file.hpp"
+#include "phongrast/io/obj_file.hpp"
+#include "phongrast/io/scene_file.hpp"
+#include "phongrast/render.hpp"
+
+using namespace phongrast;
+
+namespace {
+
+const std::string default_scene = PHONGRAST_DEFAULT_SCENE;
+
+RenderResult library_render(int size, const AovRequest& aovs, int samples = 1) {
+    Scene scene = load_scene_with_library(default_scene);
+    scene.image.rows = scene.image.columns = size;
+    RenderOptions options = RenderOptions::exact();
+    options.aovs = aovs;
+    options.samples_per_axis = samples;
+    return render(scene, options);
+}
+
+// Every file in the folder with its contents.
+std::map<std::string, std::string> snapshot(const TemporaryFolder& folder) {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(folder.file(""))) {
+        files[entry.path().filename().string()] = read_text(entry.path().string());
+    }
+    return files;
+}
+
+// Starts `phongrast ARGUMENTS...` in the folder, sends SIGINT after `delay`, and returns its exit status.
+int interrupt_after(const TemporaryFolder& folder, std::vector<std::string> arguments, std::chrono::milliseconds delay) {
+    const pid_t child = fork();
+    if (child == 0) {
+        if (chdir(folder.file("").c_str()) != 0) _exit(127);
+        const int null = open("/dev/null", O_WRONLY);
+        dup2(null, STDOUT_FILENO);
+        dup2(null, STDERR_FILENO);
+        std::vector<char*> argv;
+        static std::string program = PHONGRAST_CLI;
+        argv.push_back(program.data());
+        for (std::string& argument : arguments) argv.push_back(argument.data());
+        argv.push_back(nullptr);
+        execv(program.c_str(), argv.data());
+        _exit(127);
+    }
+    // Until the program has installed its handler (SigCgt in /proc lists caught signals), a SIGINT
+    // would end it before main(): starting takes a while on a busy machine (shared libraries).
+    // Only after exec: before it, the child is this test process, whose Catch2 catches SIGINT too.
+    const auto handler_installed = [child] {
+        std::error_code error;
+        const auto exe = std::filesystem::read_symlink("/proc/" + std::to_string(child) + "/exe", error);
+        if (error || exe != std::filesystem::canonical(PHONGRAST_CLI, error)) return false;
+        std::ifstream status("/proc/" + std::to_string(child) + "/status");
+        std::string line;
+        while (std::getline(status, line)) {
+            if (line.rfind("SigCgt:", 0) == 0) return ((std::stoull(line.substr(7), nullptr, 16) >> (SIGINT - 1)) & 1) != 0;
+        }
+        return false;
+    };
+    for (int tries = 0; tries < 3000 && !handler_installed(); ++tries) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    std::this_thread::sleep_for(delay);
+    kill(child, SIGINT);
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+TEST_CASE("render with aov all writes the library's planes as named EXR channels") {
+    TemporaryFolder folder;
+    const Run run = run_cli(folder, "render '" + default_scene + "' --size 96x96 --aov all -o all.exr --quiet");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    Image image;
+    AovPlanes planes;
+    io::read_exr_with_aovs(folder.file("all.exr"), image, planes);
+    const RenderResult expected = library_render(96, AovRequest::all());
+    CHECK(image.pixels == expected.image.pixels);
+    CHECK(planes.depth == expected.aovs.depth);
+    CHECK(planes.normal == expected.aovs.normal);
+    CHECK(planes.id == expected.aovs.id);
+    CHECK(planes.alpha == expected.aovs.alpha);
+    CHECK(std::count(planes.id.begin(), planes.id.end(), -1) > 0);  // some background, kept as -1
+    CHECK(folder.entry_count() == 3);                               // the EXR and the two captured streams
+
+    // Only what is asked for.
+    REQUIRE(run_cli(folder, "render '" + default_scene + "' --size 32x32 --aov depth,id -o some.exr").status == 0);
+    io::read_exr_with_aovs(folder.file("some.exr"), image, planes);
+    CHECK(planes.depth.size() == 32 * 32);
+    CHECK(planes.id.size() == 32 * 32);
+    CHECK(planes.normal.empty());
+    CHECK(planes.alpha.empty());
+}
+
+TEST_CASE("render with transparent writes an RGBA PNG whose alpha is the coverage") {
+    TemporaryFolder folder;
+    REQUIRE(run_cli(folder, "render '" + default_scene + "' --size 64x64 --samples 2 --transparent -o t.png").status == 0);
+    auto input = OIIO::ImageInput::open(folder.file("t.png"));
+    REQUIRE(input);
+    REQUIRE(input->spec().nchannels == 4);
+    std::vector<std::uint8_t> rgba(64 * 64 * 4);
+    REQUIRE(input->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, rgba.data()));
+    const RenderResult expected = library_render(64, AovRequest{false, false, false, true}, 2);
+    int transparent = 0, opaque = 0, partial = 0;
+    for (std::size_t p = 0; p < 64 * 64; ++p) {
+        const float alpha = expected.aovs.alpha[p];
+        CHECK(int(rgba[4 * p + 3]) == int(std::lround(alpha * 255.0f)));
+        transparent += alpha == 0.0f;
+        opaque += alpha == 1.0f;
+        partial += alpha > 0.0f && alpha < 1.0f;
+    }
+    CHECK(transparent > 0);
+    CHECK(opaque > 0);
+    CHECK(partial > 0);  // anti-aliased edges
+}
+
+TEST_CASE("bad combinations of extra outputs and formats are refused before rendering") {
+    TemporaryFolder folder;
+    Run run = run_cli(folder, "render '" + default_scene + "' --aov depth -o x.png");
+    CHECK(run.status == 2);
+    CHECK_THAT(run.err, Catch::Contains("--aov: the extra outputs go into an EXR file"));
+    run = run_cli(folder, "render '" + default_scene + "' --transparent -o x.exr");
+    CHECK(run.status == 2);
+    CHECK_THAT(run.err, Catch::Contains("--transparent: writes a PNG with alpha"));
+    run = run_cli(folder, "render '" + default_scene + "' --aov depth,colour -o x.exr");
+    CHECK(run.status == 2);
+    CHECK_THAT(run.err, Catch::Contains("--aov: unknown output 'colour'"));
+    CHECK(folder.entry_count() == 2);  // only the captured streams
+}
+
+TEST_CASE("Ctrl-C during render or sheet exits 130 and leaves the folder as it was") {
+    TemporaryFolder folder;
+    folder.write("out.png", "the user's earlier file");
+    folder.write("sheet.png", "another earlier file");
+    const auto before = snapshot(folder);
+    // Long enough that the signal always comes first: thousands of frames, or eight large supersampled figures.
+    CHECK(interrupt_after(folder, {"render", default_scene, "--repeat", "100000", "-o", "out.png"},
+                          std::chrono::milliseconds(400)) == 130);
+    CHECK(snapshot(folder) == before);
+    CHECK(interrupt_after(folder, {"sheet", default_scene, "--size", "1536x1536", "--samples", "2", "-o", "sheet.png"},
+                          std::chrono::milliseconds(400)) == 130);
+    CHECK(snapshot(folder) == before);
+}
