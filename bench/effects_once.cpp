@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     std::string shader = "phong", lighting = "full";
     int lights = 2, dark_lights = 0;
     bool general = false, cull = false;
+    std::string aovs;
     app.add_option("--levels", levels, "icosphere of 20 x 4^levels triangles: 3 = 1,280, 6 = 81,920")->check(CLI::Range(0, 7));
     app.add_option("--shader", shader, "flat, gouraud or phong");
     app.add_option("--lighting", lighting, "ambient, diffuse, specular, full or a '+' list");
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
     app.add_option("--dark", dark_lights, "extra lights of zero intensity")->check(CLI::Range(0, 64));
     app.add_flag("--general", general, "the general kernel (RenderOptions::specialize_effects = false)");
     app.add_flag("--cull", cull, "BackFaces::cull_when_hidden");
+    app.add_option("--aovs", aovs, "extra outputs to fill too: depth,normal,id,alpha or all (default none)");
     CLI11_PARSE(app, argc, argv);
     try {
         phongrast::Scene scene = phongrast_bench::effect_scene(phongrast::support::icosphere(1 << levels), 512, 512);
@@ -40,6 +42,7 @@ int main(int argc, char** argv) {
         options.threads = 1;
         options.specialize_effects = !general;
         options.back_faces = cull ? phongrast::BackFaces::cull_when_hidden : phongrast::BackFaces::draw;
+        if (!aovs.empty()) options.aovs = phongrast::parse_aovs(aovs);
         const phongrast::RenderStats stats = phongrast::render(scene, options).stats;
         std::printf("%llu triangles drawn, %llu culled, %llu samples shaded; %s\n",
                     static_cast<unsigned long long>(stats.triangles_drawn),

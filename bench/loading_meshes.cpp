@@ -5,35 +5,15 @@
 
 #include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/obj_file.hpp"
+#include "support/meshes.hpp"
 
 namespace phongrast_bench {
 
 phongrast::Mesh loading_sphere(std::size_t triangles) {
     // 2 x slices x (stacks - 1) triangles with slices = 2 x stacks.
     const int stacks = std::max(2, static_cast<int>(std::lround(std::sqrt(double(triangles) / 4.0))));
-    const int slices = 2 * stacks;
-    const double pi = 3.14159265358979323846;
-    phongrast::Mesh mesh;
-    mesh.positions.push_back({0, 1, 0});
-    for (int i = 1; i < stacks; ++i) {
-        for (int j = 0; j < slices; ++j) {
-            const double theta = pi * i / stacks;
-            const double phi = 2 * pi * j / slices;
-            mesh.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)});
-        }
-    }
-    mesh.positions.push_back({0, -1, 0});
+    phongrast::Mesh mesh = phongrast::support::uv_sphere(stacks, 2 * stacks, 1.0);
     for (const glm::dvec3& p : mesh.positions) mesh.colors.emplace_back(glm::vec3(0.5 + 0.5 * p));
-    const auto ring = [slices](int i, int j) { return std::uint32_t(1 + (i - 1) * slices + (j % slices)); };
-    const auto bottom = std::uint32_t(mesh.positions.size() - 1);
-    for (int j = 0; j < slices; ++j) {
-        mesh.triangles.push_back({0, ring(1, j), ring(1, j + 1)});
-        for (int i = 1; i + 1 < stacks; ++i) {
-            mesh.triangles.push_back({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)});
-            mesh.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)});
-        }
-        mesh.triangles.push_back({ring(stacks - 1, j), bottom, ring(stacks - 1, j + 1)});
-    }
     return mesh;
 }
 

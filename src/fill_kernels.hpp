@@ -55,23 +55,6 @@ inline void span_weights(const std::int64_t* e, const std::int64_t* step, Real i
     }
 }
 
-/// Sample k of a span: its interpolation weights w (summing to 1 up to
-/// rounding) and the depth the depth buffer tests, from span_weights()'s q
-/// and dq. The extra outputs' pass (aov_pass.cpp) calls this too, so that it
-/// finds exactly the depths the fill compared.
-template <typename Real, bool Perspective>
-inline Real sample_weights(const Real* q, const Real* dq, int k, const DrawTriangle<Real>& draw, Real* w) {
-    for (int i = 0; i < 3; ++i) w[i] = q[i] + dq[i] * static_cast<Real>(k);
-    if constexpr (Perspective) {
-        // Weights linear in the triangle's plane: renormalise the depth-divided ones.
-        const Real depth = Real(1) / (w[0] + w[1] + w[2]);
-        for (int i = 0; i < 3; ++i) w[i] *= depth;
-        return depth;
-    } else {
-        return w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
-    }
-}
-
 /// The last guard before a pixel is written: every input was validated
 /// finite, so this should never fire; if it does, the channel becomes 0 and
 /// is counted (RenderStats::nonfinite_values_replaced), never written as NaN.
@@ -107,8 +90,16 @@ void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shad
         for (int k = 0; k < count; ++k) {
             // Painted over later: skipped. The weights below depend on k only, not on what was skipped.
             if (owners != nullptr && owners[first_column + k] != target.self) continue;
-            Real w[3];
-            const Real depth = sample_weights<Real, Perspective>(q, dq, k, draw, w);
+            Real w[3] = {q[0] + dq[0] * static_cast<Real>(k), q[1] + dq[1] * static_cast<Real>(k),
+                         q[2] + dq[2] * static_cast<Real>(k)};
+            Real depth;
+            if constexpr (Perspective) {
+                // Weights linear in the triangle's plane: renormalise the depth-divided ones.
+                depth = Real(1) / (w[0] + w[1] + w[2]);
+                for (int i = 0; i < 3; ++i) w[i] *= depth;
+            } else {
+                depth = w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
+            }
             const std::size_t index = row_start + static_cast<std::size_t>(first_column + k);
             if (target.depth_test) {
                 // <= lets a later triangle at equal depth win, as in painter's order.

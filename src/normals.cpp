@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,21 @@
 
 namespace phongrast {
 namespace detail {
+namespace {
+
+/// body(i) for i in [0, count), with poll() (when given) before each block of
+/// indices: one test per block, so a render without progress reports pays nothing per element.
+template <typename Body>
+void for_each_polling(std::size_t count, const std::function<void()>& poll, const Body& body) {
+    constexpr std::size_t kPollEvery = 16384;
+    for (std::size_t begin = 0; begin < count; begin += kPollEvery) {
+        if (poll) poll();
+        const std::size_t end = std::min(count, begin + kPollEvery);
+        for (std::size_t i = begin; i < end; ++i) body(i);
+    }
+}
+
+}  // namespace
 
 void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
                             NormalsScratch& scratch, std::vector<glm::vec3>& normals,
@@ -23,9 +39,7 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
     std::vector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
     largest_face_normal.assign(positions.size(), glm::dvec3(0.0));
 
-    constexpr std::size_t kPollEvery = 16384;
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-        if (poll && t % kPollEvery == 0) poll();
+    for_each_polling(triangles.size(), poll, [&](std::size_t t) {
         const Triangle& triangle = triangles[t];
         const glm::dvec3& a = positions[triangle[0]];
         const glm::dvec3& b = positions[triangle[1]];
@@ -33,7 +47,7 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
         // Edges from the first vertex keep the cross product small relative to
         // the coordinates for meshes far from the origin.
         const glm::dvec3 face = glm::cross(b - a, c - a);
-        if (!detail::all_finite(face)) continue;
+        if (!detail::all_finite(face)) return;
         const double twice_area = glm::length(face);
         for (std::uint32_t vertex : triangle) {
             sums[vertex] += face;
@@ -42,11 +56,10 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
                 largest_face_normal[vertex] = face;
             }
         }
-    }
+    });
 
     normals.resize(positions.size());
-    for (std::size_t vertex = 0; vertex < positions.size(); ++vertex) {
-        if (poll && vertex % kPollEvery == 0) poll();
+    for_each_polling(positions.size(), poll, [&](std::size_t vertex) {
         glm::dvec3 normal = safe_normalize<double>(sums[vertex]);
         // A sum that is tiny relative to its largest face means opposite faces
         // cancelled (two-sided sheet): its direction is rounding noise.
@@ -55,7 +68,7 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
             normal = safe_normalize<double>(largest_face_normal[vertex]);
         }
         normals[vertex] = glm::vec3(normal);
-    }
+    });
 }
 
 }  // namespace detail

@@ -18,25 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 }  // namespace
-
-Run run_phongrast(const TemporaryFolder& folder, const std::string& arguments, const std::string& environment) {
-    const std::string command = "cd '" + folder.file("") + "' && " + environment + " '" + PHONGRAST_CLI + "' " +
-                                arguments + " > stdout.txt 2> stderr.txt";
-    const int raw = std::system(command.c_str());
-    Run run;
-    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    run.out = read_text(folder.file("stdout.txt"));
-    run.err = read_text(folder.file("stderr.txt"));
-    return run;
-}
 
 pid_t start_batch(const TemporaryFolder& folder, const std::vector<std::string>& arguments) {
     std::vector<std::string> words = {PHONGRAST_CLI, "batch", "--quiet"};
@@ -83,7 +65,7 @@ std::map<std::string, std::string> files_under(const std::string& folder) {
     for (const auto& entry : fs::recursive_directory_iterator(folder)) {
         const std::string relative = fs::relative(entry.path(), folder).string();
         if (entry.is_regular_file() && relative.rfind(".phongrast-batch", 0) != 0) {
-            files[relative] = read_text(entry.path());
+            files[relative] = read_text(entry.path().string());
             if (entry.path().extension() == ".exr") {
                 // OpenEXR stamps each file with the time it was written: compare the pixels.
                 const phongrast::Image image = phongrast::io::read_image(entry.path().string());

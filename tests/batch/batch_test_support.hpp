@@ -12,19 +12,18 @@
 #include <nlohmann/json.hpp>
 #include <sys/types.h>
 
+#include "cli/cli_run.hpp"
 #include "io_test_files.hpp"
 
 namespace batch_test {
 
-struct Run {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
+using ::Run;
 
-/// Runs `phongrast ARGUMENTS` (a shell command line; `environment` is put in
-/// front, e.g. "A=1 B=2") in `folder` and captures its exit status and output.
-Run run_phongrast(const TemporaryFolder& folder, const std::string& arguments, const std::string& environment = "");
+/// run_cli() of tests/cli/cli_run.hpp: `phongrast ARGUMENTS` in `folder`, `environment` put in front.
+inline Run run_phongrast(const TemporaryFolder& folder, const std::string& arguments,
+                         const std::string& environment = "") {
+    return run_cli(folder, arguments, environment);
+}
 
 /// Starts `phongrast batch MANIFEST -o OUTDIR EXTRA...` in the background in `folder`; returns its pid.
 pid_t start_batch(const TemporaryFolder& folder, const std::vector<std::string>& arguments);

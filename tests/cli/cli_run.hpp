@@ -27,10 +27,11 @@ inline std::string read_text(const std::string& path) {
     return text.str();
 }
 
-/// Runs `phongrast ARGUMENTS` in `folder` and captures its exit status and output.
-inline Run run_cli(const TemporaryFolder& folder, const std::string& arguments) {
-    const std::string command = "cd '" + folder.file("") + "' && '" + std::string(PHONGRAST_CLI) + "' " + arguments +
-                                " > stdout.txt 2> stderr.txt";
+/// Runs `phongrast ARGUMENTS` (a shell command line; `environment` is put in
+/// front, e.g. "A=1 B=2") in `folder` and captures its exit status and output.
+inline Run run_cli(const TemporaryFolder& folder, const std::string& arguments, const std::string& environment = "") {
+    const std::string command = "cd '" + folder.file("") + "' && " + environment + " '" + std::string(PHONGRAST_CLI) +
+                                "' " + arguments + " > stdout.txt 2> stderr.txt";
     const int raw = std::system(command.c_str());
     Run run;
     run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -7,6 +7,11 @@
 //       then position(3) intensity(3) per light; prints the RGB result (double)
 //   python_reference normals   "Nv NT", Nv positions (3 each), NT faces (3 each);
 //       prints one normal (float) per line
+//   python_reference shade     one triangle per line: gouraud|phong rows columns, then per corner
+//       column row normal(3) color(3), then centroid(3) eye(3) ka(3) kd(3) ks(3) n ambient(3)
+//       lighting light_count and position(3) intensity(3) per light; prints "row column r g b"
+//       (double) per painted pixel, then an empty line
+#include <array>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -14,6 +19,7 @@
 
 #include "phongrast/lighting.hpp"
 #include "phongrast/mesh.hpp"
+#include "phongrast/seed_fill.hpp"
 
 namespace {
 
@@ -61,12 +67,60 @@ int run_normals(std::istream& in) {
     return 0;
 }
 
+phongrast::PhongMaterial read_material(std::istream& in) {
+    phongrast::PhongMaterial material;
+    material.ka = glm::vec3(read3(in));
+    material.kd = glm::vec3(read3(in));
+    material.ks = glm::vec3(read3(in));
+    in >> material.n;
+    return material;
+}
+
+int run_shade(std::istream& in) {
+    while (true) {
+        std::string shader;
+        int rows = 0, columns = 0;
+        in >> shader >> rows >> columns;
+        if (!in) return 0;
+        std::array<phongrast::SeedCorner, 3> corners;
+        for (phongrast::SeedCorner& corner : corners) {
+            in >> corner.pixel.x >> corner.pixel.y;
+            corner.normal = read3(in);
+            corner.color = read3(in);
+        }
+        phongrast::SeedLighting lighting;
+        lighting.centroid = read3(in);
+        lighting.eye = read3(in);
+        lighting.material = read_material(in);
+        lighting.ambient = read3(in);
+        std::string terms;
+        std::size_t count = 0;
+        in >> terms >> count;
+        lighting.lighting = phongrast::parse_lighting(terms);
+        lighting.lights.resize(count);
+        for (phongrast::PointLight& light : lighting.lights) {
+            light.position = read3(in);
+            light.intensity = glm::vec3(read3(in));
+        }
+        const phongrast::PaintPixel print = [](int row, int column, const glm::dvec3& c) {
+            std::printf("%d %d %.17g %.17g %.17g\n", row, column, c.x, c.y, c.z);
+        };
+        if (shader == "gouraud") {
+            phongrast::shade_gouraud(corners, lighting, rows, columns, print);
+        } else {
+            phongrast::shade_phong(corners, lighting, rows, columns, print);
+        }
+        std::printf("\n");
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "light") return run_light(std::cin);
     if (mode == "normals") return run_normals(std::cin);
-    std::fprintf(stderr, "usage: python_reference light|normals < input\n");
+    if (mode == "shade") return run_shade(std::cin);
+    std::fprintf(stderr, "usage: python_reference light|normals|shade < input\n");
     return 2;
 }

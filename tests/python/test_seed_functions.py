@@ -3,12 +3,13 @@ light and calculate_normals against a small C++ program calling the library
 (python_reference.cpp); render_object against the `phongrast` executable
 rendering the same scene file to EXR (read back through phongrast::io)."""
 import itertools
+import subprocess
 
 import numpy as np
 import pytest
 
 import phongrast
-from conftest import assert_same_bits, run_phongrast, run_reference
+from conftest import REFERENCE_EXE, assert_same_bits, run_phongrast, run_reference
 
 LIGHTINGS = ["ambient", "diffusion", "specular", "full", "ambient+specular", "diffuse+specular"]
 
@@ -152,3 +153,41 @@ def test_shade_functions_handle_degenerate_input_on_purpose():
         shade([[0, 6, 0], [0, 0, 6]], normals, np.ones((3, 3)), [0, 0, 0], [0, 0, 0], mat, lights, 0.5, X, "full")
         painted = X[..., 0] != -1.0
         assert painted.sum() == 15 and np.all(np.isfinite(X))  # centres on the hypotenuse (a right edge) excluded
+
+
+@pytest.mark.parametrize("shader", ["gouraud", "phong"])
+def test_shade_functions_equal_the_library_bit_for_bit(shader):
+    """shade_gouraud/shade_phong are the C++ library's phongrast::shade_gouraud/shade_phong:
+    every painted pixel equal bit for bit (python_reference.cpp calls the library)."""
+    rng = np.random.default_rng(7)
+    shade = phongrast.shade_gouraud if shader == "gouraud" else phongrast.shade_phong
+    f32 = lambda v: " ".join(repr(float(x)) for x in np.asarray(v, np.float32))
+    f64 = lambda v: " ".join(repr(float(x)) for x in np.ravel(v))
+    lines, canvases = [], []
+    for case in range(12):
+        M, N = 24, 32
+        p = rng.uniform(-4, [N + 4, M + 4], size=(3, 2)).T  # 2 x 3, corners partly off the canvas
+        normals, colors = rng.normal(size=(3, 3)), rng.random((3, 3))
+        centroid, eye = rng.normal(size=3), rng.normal(size=3) * 4
+        ka, kd, ks, n, ambient = rng.random(3), rng.random(3), rng.random(3), float(rng.integers(1, 30)), rng.random(3)
+        lights = [(rng.normal(size=3) * 3, rng.random(3)) for _ in range(1 + case % 3)]
+        lighting = LIGHTINGS[case % len(LIGHTINGS)]
+        X = np.zeros((M, N, 3))
+        shade(p, normals, colors, centroid, eye, phongrast.PhongMaterial(ka, kd, ks, n),
+              [phongrast.PointLight(q, i) for q, i in lights], ambient, X, lighting)
+        canvases.append(X)
+        corners = " ".join(f"{p[0, k]!r} {p[1, k]!r} {f64(normals[:, k])} {f64(colors[:, k])}" for k in range(3))
+        lines.append(" ".join([shader, str(M), str(N), corners, f64(centroid), f64(eye), f32(ka), f32(kd), f32(ks),
+                               repr(n), f64(ambient), lighting.replace("diffusion", "diffuse"), str(len(lights))] +
+                              [f64(q) + " " + f32(i) for q, i in lights]))
+    completed = subprocess.run([REFERENCE_EXE, "shade"], input="\n".join(lines) + "\n", capture_output=True, text=True)
+    assert completed.returncode == 0, completed.stderr
+    painted_total = 0
+    for X, block in zip(canvases, completed.stdout.split("\n\n")):
+        expected = np.zeros_like(X)
+        for line in block.strip().splitlines():
+            row, column, *rgb = line.split()
+            expected[int(row), int(column)] = [float(v) for v in rgb]
+            painted_total += 1
+        assert_same_bits(X, expected)
+    assert painted_total > 100
