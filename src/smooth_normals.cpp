@@ -10,19 +10,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "finite.hpp"
+#include "phongrast/lighting.hpp"
+
 namespace phongrast {
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-
-// Unit vector of v in double, or zero when v is zero or not finite; scaled by
-// its largest component first so tiny meshes do not underflow (as calculate_normals).
-glm::dvec3 unit_or_zero(const glm::dvec3& v) {
-    const double largest = std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
-    if (!(largest > 0.0) || !std::isfinite(largest)) return glm::dvec3(0.0);
-    const glm::dvec3 scaled = v / largest;
-    return scaled / std::sqrt(glm::dot(scaled, scaled));
-}
 
 struct PositionKey {
     double x, y, z;
@@ -99,9 +93,9 @@ FaceNormals face_normals(const Mesh& mesh) {
         const Triangle& t = mesh.triangles[f];
         const glm::dvec3& a = mesh.positions[t[0]];
         glm::dvec3 cross = glm::cross(mesh.positions[t[1]] - a, mesh.positions[t[2]] - a);
-        if (!std::isfinite(cross.x) || !std::isfinite(cross.y) || !std::isfinite(cross.z)) cross = glm::dvec3(0.0);
+        if (!detail::all_finite(cross)) cross = glm::dvec3(0.0);
         normals.weighted[f] = cross;
-        normals.unit[f] = unit_or_zero(cross);
+        normals.unit[f] = safe_normalize<double>(cross);
     }
     return normals;
 }
@@ -125,8 +119,8 @@ glm::vec3 pooled_normal(const FaceNormals& normals, const std::uint32_t* begin, 
             largest_face = weighted;
         }
     }
-    glm::dvec3 normal = unit_or_zero(sum);
-    if (normal == glm::dvec3(0.0) || !(glm::length(sum) > 1e-12 * largest_area)) normal = unit_or_zero(largest_face);
+    glm::dvec3 normal = safe_normalize<double>(sum);
+    if (normal == glm::dvec3(0.0) || !(glm::length(sum) > 1e-12 * largest_area)) normal = safe_normalize<double>(largest_face);
     return glm::vec3(normal);
 }
 

@@ -13,6 +13,7 @@
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/text_file.hpp"
+#include "png_bytes.hpp"
 
 namespace phongrast::io {
 namespace {
@@ -28,11 +29,6 @@ void require_plane_size(std::size_t size, const Image& image, const std::string&
     }
 }
 
-std::uint8_t to_8_bit(float value) {
-    if (!(value > 0.0f)) return 0;
-    if (value >= 1.0f) return 255;
-    return static_cast<std::uint8_t>(std::lround(value * 255.0f));
-}
 
 void open_output(OIIO::ImageOutput& output, const std::string& temporary, const std::string& path,
                  const OIIO::ImageSpec& spec) {
@@ -161,9 +157,9 @@ void write_png_with_alpha(const Image& image, const std::vector<float>& alpha, c
         for (int c = 0; c < 3; ++c) {
             // pixel = a * surface + (1 - a) * background: solve for the surface.
             const float surface = a > 0.0f ? (image.pixels[p][c] - (1.0f - a) * background[c]) / a : 0.0f;
-            bytes[4 * p + static_cast<std::size_t>(c)] = to_8_bit(surface);
+            bytes[4 * p + static_cast<std::size_t>(c)] = detail::to_8_bit(surface);
         }
-        bytes[4 * p + 3] = to_8_bit(a);
+        bytes[4 * p + 3] = detail::to_8_bit(a);
     }
     OIIO::ImageSpec spec(image.columns, image.rows, 4, OIIO::TypeDesc::UINT8);
     spec.alpha_channel = 3;

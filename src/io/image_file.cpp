@@ -12,6 +12,7 @@
 
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/text_file.hpp"
+#include "png_bytes.hpp"
 
 namespace phongrast::io {
 namespace {
@@ -23,12 +24,6 @@ std::string lower_case_extension(const std::string& path) {
     return extension;
 }
 
-/// [0,1] clamp then round to 8 bits; NaN (never expected) becomes 0.
-std::uint8_t to_8_bit(float value) {
-    if (!(value > 0.0f)) return 0;
-    if (value >= 1.0f) return 255;
-    return static_cast<std::uint8_t>(std::lround(value * 255.0f));
-}
 
 void write_with_openimageio(const Image& image, const std::string& temporary,
                             const std::string& path, ImageFormat format) {
@@ -44,7 +39,7 @@ void write_with_openimageio(const Image& image, const std::string& temporary,
     if (png) {
         std::vector<std::uint8_t> bytes(image.pixels.size() * 3);
         for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-            for (int c = 0; c < 3; ++c) bytes[3 * i + static_cast<std::size_t>(c)] = to_8_bit(image.pixels[i][c]);
+            for (int c = 0; c < 3; ++c) bytes[3 * i + static_cast<std::size_t>(c)] = detail::to_8_bit(image.pixels[i][c]);
         }
         written = output->write_image(OIIO::TypeDesc::UINT8, bytes.data());
     } else {
