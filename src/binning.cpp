@@ -1,30 +1,48 @@
 #include "binning.hpp"
 
+#include <algorithm>
+
 #include <tbb/parallel_for.h>
+
+#include "prefetch.hpp"
 
 namespace phongrast::detail {
 namespace {
 
+/// Drawn triangles of painter's order binned by one task.
+constexpr std::size_t kBinningBlock = 16384;
+
+/// Calls visit(band, draw) for every band every draw of `drawn` touches. A
+/// triangle with one draw (nearly all) is binned from its DrawnTriangle
+/// alone; only clipped ones read their draws' rows.
 template <typename Real, typename Visit>
-void for_each_band(const DrawTriangle<Real>& draw, Visit&& visit) {
-    for (int band = draw.coverage.row_min / kBandRows; band <= draw.coverage.row_max / kBandRows; ++band) {
-        visit(static_cast<std::size_t>(band));
+void for_each_band(const DrawList<Real>& draws, const DrawnTriangle& drawn, Visit&& visit) {
+    const DrawTriangle<Real>* first = draws.chunk_draws[drawn.chunk].data() + drawn.first;
+    if (drawn.count == 1) {
+        for (std::size_t band = drawn.band_first; band <= drawn.band_last; ++band) visit(band, first);
+        return;
+    }
+    for (const DrawTriangle<Real>* draw = first; draw != first + drawn.count; ++draw) {
+        const std::size_t band_last = static_cast<std::size_t>(draw->coverage.row_max / kBandRows);
+        for (std::size_t band = static_cast<std::size_t>(draw->coverage.row_min / kBandRows); band <= band_last; ++band) {
+            visit(band, draw);
+        }
     }
 }
 
-// Band-major offsets: band b's slice starts at band_start[b]; within it, chunk after chunk.
+// Band-major offsets: band b's slice starts at band_start[b]; within it, block after block.
 template <typename Real>
-void lay_out_bands(std::size_t chunks, BinningMemory& memory, Bins<Real>& bins) {
+void lay_out_bands(std::size_t blocks, BinningMemory& memory, Bins<Real>& bins) {
     const std::size_t bands = static_cast<std::size_t>(bins.bands);
     bins.band_start.assign(bands + 1, 0);
-    memory.chunk_band_cursor.resize(memory.chunk_band_count.size());
+    memory.block_band_cursor.resize(memory.block_band_count.size());
     std::uint32_t total = 0;
     for (std::size_t band = 0; band < bands; ++band) {
         bins.band_start[band] = total;
-        for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-            const std::size_t slot = chunk * bands + band;
-            memory.chunk_band_cursor[slot] = total;
-            total += memory.chunk_band_count[slot];
+        for (std::size_t block = 0; block < blocks; ++block) {
+            const std::size_t slot = block * bands + band;
+            memory.block_band_cursor[slot] = total;
+            total += memory.block_band_count[slot];
         }
     }
     bins.band_start[bands] = total;
@@ -33,28 +51,37 @@ void lay_out_bands(std::size_t chunks, BinningMemory& memory, Bins<Real>& bins) 
 }  // namespace
 
 template <typename Real>
-void bin_draws(const DrawList<Real>& draws, int rows, BinningMemory& memory, Bins<Real>& bins) {
+void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, int rows, BinningMemory& memory,
+               Bins<Real>& bins) {
     bins.bands = (rows + kBandRows - 1) / kBandRows;
     const std::size_t bands = static_cast<std::size_t>(bins.bands);
-    const std::size_t chunks = draws.chunks;
-    memory.chunk_band_count.assign(chunks * bands, 0);
-    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
-        std::uint32_t* count = &memory.chunk_band_count[chunk * bands];
-        for (const DrawTriangle<Real>& draw : draws.chunk_draws[chunk]) {
-            for_each_band(draw, [&](std::size_t band) { ++count[band]; });
+    const std::vector<std::uint32_t>& order = painter.order;
+    const std::size_t blocks = (order.size() + kBinningBlock - 1) / kBinningBlock;
+    // Calls visit(band, draw) for every draw of block `block`, in painter's order.
+    const auto for_each_draw_of_block = [&](std::size_t block, auto&& visit) {
+        const std::size_t end = std::min(order.size(), (block + 1) * kBinningBlock);
+        for (std::size_t k = block * kBinningBlock; k < end; ++k) {
+            if (k + kPrefetchAhead < end) prefetch_address(&painter.drawn[order[k + kPrefetchAhead]]);
+            for_each_band(draws, painter.drawn[order[k]], visit);
         }
+    };
+    memory.block_band_count.assign(blocks * bands, 0);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+        std::uint32_t* count = &memory.block_band_count[block * bands];
+        for_each_draw_of_block(block, [&](std::size_t band, const DrawTriangle<Real>*) { ++count[band]; });
     });
-    lay_out_bands(chunks, memory, bins);
+    lay_out_bands(blocks, memory, bins);
     bins.draws.resize(bins.band_start[bands]);
-    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
-        std::uint32_t* cursor = &memory.chunk_band_cursor[chunk * bands];
-        for (const DrawTriangle<Real>& draw : draws.chunk_draws[chunk]) {
-            for_each_band(draw, [&](std::size_t band) { bins.draws[cursor[band]++] = &draw; });
-        }
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+        std::uint32_t* cursor = &memory.block_band_cursor[block * bands];
+        for_each_draw_of_block(block, [&](std::size_t band, const DrawTriangle<Real>* draw) {
+            bins.draws[cursor[band]++] = draw;
+        });
     });
 }
 
-template void bin_draws<float>(const DrawList<float>&, int, BinningMemory&, Bins<float>&);
-template void bin_draws<double>(const DrawList<double>&, int, BinningMemory&, Bins<double>&);
+template void bin_draws<float>(const DrawList<float>&, const PainterOrderMemory&, int, BinningMemory&, Bins<float>&);
+template void bin_draws<double>(const DrawList<double>&, const PainterOrderMemory&, int, BinningMemory&,
+                                Bins<double>&);
 
 }  // namespace phongrast::detail

@@ -8,12 +8,10 @@
 #include <vector>
 
 #include "fill_types.hpp"
+#include "painter_order.hpp"
 #include "triangle_setup.hpp"
 
 namespace phongrast::detail {
-
-/// Rows of samples per band: the unit of work of the fill.
-constexpr int kBandRows = 16;
 
 /// The draw triangles of each band of kBandRows sample rows, in painter's order.
 template <typename Real>
@@ -28,16 +26,18 @@ struct Bins {
 
 /// bin_draws()'s scratch, kept from frame to frame.
 struct BinningMemory {
-    std::vector<std::uint32_t> chunk_band_count;   ///< per set-up chunk and band: draws it puts there
-    std::vector<std::uint32_t> chunk_band_cursor;  ///< per set-up chunk and band: where its next one goes
+    std::vector<std::uint32_t> block_band_count;   ///< per block of painter's order and band: draws it puts there
+    std::vector<std::uint32_t> block_band_cursor;  ///< per block and band: where its next one goes
 };
 
-/// Bins the draw list of an image `rows` samples high. Counted and scattered
-/// in parallel over the set-up chunks (which are in painter's order), each
-/// chunk writing its own slice of every band: the same bins for any number
-/// of threads.
+/// Bins the draws of an image `rows` samples high, triangle by triangle in
+/// painter's order (painter.order into painter.drawn, whose draws are in
+/// `draws`). Counted and scattered in parallel over fixed blocks of that
+/// order, each block writing its own slice of every band: the same bins for
+/// any number of threads.
 template <typename Real>
-void bin_draws(const DrawList<Real>& draws, int rows, BinningMemory& memory, Bins<Real>& bins);
+void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, int rows, BinningMemory& memory,
+               Bins<Real>& bins);
 
 }  // namespace phongrast::detail
 

@@ -59,21 +59,20 @@ inline std::pair<std::size_t, std::size_t> block_range(std::size_t n, std::size_
     return {block * kBlock, std::min(n, (block + 1) * kBlock)};
 }
 
-/// Small inputs: insertion sort, stable, and (unlike std::stable_sort) no temporary buffer.
-inline void insertion_order(const std::vector<double>& depth, std::vector<std::uint32_t>& order) {
-    for (std::size_t i = 0; i < depth.size(); ++i) {
+/// Small inputs: insertion sort on the keys, stable, and (unlike
+/// std::stable_sort) no temporary buffer.
+inline void insertion_order(const std::vector<std::uint64_t>& keys, std::size_t n, std::vector<std::uint32_t>& order) {
+    for (std::size_t i = 0; i < n; ++i) {
         std::size_t j = i;
-        for (; j > 0 && depth[order[j - 1]] < depth[i]; --j) order[j] = order[j - 1];
+        for (; j > 0 && keys[order[j - 1]] > keys[i]; --j) order[j] = order[j - 1];
         order[j] = static_cast<std::uint32_t>(i);
     }
 }
 
-/// The first pass over the depths: the keys, the identity order, and every
-/// pass's digit counts per block.
-inline void make_keys(const std::vector<double>& depth, std::size_t blocks, std::vector<std::uint32_t>& order,
-                      DepthSortScratch& scratch, const std::function<void()>& poll) {
-    const std::size_t n = depth.size();
-    scratch.keys.resize(n);
+/// The first pass over the keys: the identity order, and every pass's digit
+/// counts per block.
+inline void count_digits(std::size_t n, std::size_t blocks, std::vector<std::uint32_t>& order,
+                         DepthSortScratch& scratch, const std::function<void()>& poll) {
     scratch.keys_scratch.resize(n);
     scratch.order_scratch.resize(n);
     scratch.first_counts.resize(blocks);
@@ -82,8 +81,7 @@ inline void make_keys(const std::vector<double>& depth, std::size_t blocks, std:
         for (Counts& c : counts) c.fill(0);
         const auto [begin, end] = block_range(n, block);
         for (std::size_t i = begin; i < end; ++i) {
-            const std::uint64_t key = farthest_first_key(depth[i]);
-            scratch.keys[i] = key;
+            const std::uint64_t key = scratch.keys[i];
             order[i] = static_cast<std::uint32_t>(i);
             for (int pass = 0; pass < kPasses; ++pass) ++counts[pass][(key >> (pass * kDigitBits)) & (kBuckets - 1)];
         }
@@ -107,7 +105,7 @@ inline void scatter_pass(int shift, std::size_t blocks, std::vector<std::uint32_
     const std::vector<std::uint64_t>& keys = scratch.keys;
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
         Counts& cursor = scratch.block_counts[block];
-        const auto [begin, end] = block_range(keys.size(), block);
+        const auto [begin, end] = block_range(order.size(), block);
         for (std::size_t i = begin; i < end; ++i) {
             const std::uint32_t slot = cursor[(keys[i] >> shift) & (kBuckets - 1)]++;
             scratch.keys_scratch[slot] = keys[i];
@@ -121,22 +119,21 @@ inline void scatter_pass(int shift, std::size_t blocks, std::vector<std::uint32_
 
 }  // namespace depth_sort
 
-/// Fills `order` with the indices 0..n-1 ordered by descending depth, equal
-/// depths in index order: what std::stable_sort with `depth[a] > depth[b]`
-/// returns. Allocates nothing once `order` and `scratch` have held as many.
-/// `poll`, if given, is called after each block of work, from whichever
-/// thread did it (the renderer's progress reports).
-inline void farthest_first_order(const std::vector<double>& depth, std::vector<std::uint32_t>& order,
-                                 DepthSortScratch& scratch, const std::function<void()>& poll = nullptr) {
+/// Fills `order` with the indices 0..n-1 of scratch.keys (which must hold n
+/// farthest_first_key()s) in ascending key order, equal keys in index order.
+/// Allocates nothing once `order` and `scratch` have held as many. `poll`,
+/// if given, is called after each block of work, from whichever thread did
+/// it (the renderer's progress reports).
+inline void order_by_keys(std::size_t n, std::vector<std::uint32_t>& order, DepthSortScratch& scratch,
+                          const std::function<void()>& poll = nullptr) {
     using namespace depth_sort;
-    const std::size_t n = depth.size();
     order.resize(n);
     if (n < 256) {
-        insertion_order(depth, order);
+        insertion_order(scratch.keys, n, order);
         return;
     }
     const std::size_t blocks = (n + kBlock - 1) / kBlock;
-    make_keys(depth, blocks, order, scratch, poll);
+    count_digits(n, blocks, order, scratch, poll);
     scratch.block_counts.resize(blocks);
     bool first_pass_done = false;
     for (int pass = 0; pass < kPasses; ++pass) {
@@ -162,6 +159,16 @@ inline void farthest_first_order(const std::vector<double>& depth, std::vector<s
         scatter_pass(shift, blocks, order, scratch, poll);
         first_pass_done = true;
     }
+}
+
+/// Fills `order` with the indices 0..n-1 ordered by descending depth, equal
+/// depths in index order: what std::stable_sort with `depth[a] > depth[b]`
+/// returns.
+inline void farthest_first_order(const std::vector<double>& depth, std::vector<std::uint32_t>& order,
+                                 DepthSortScratch& scratch, const std::function<void()>& poll = nullptr) {
+    scratch.keys.resize(depth.size());
+    for (std::size_t i = 0; i < depth.size(); ++i) scratch.keys[i] = farthest_first_key(depth[i]);
+    order_by_keys(depth.size(), order, scratch, poll);
 }
 
 /// farthest_first_order() into a new vector.

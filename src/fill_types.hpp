@@ -21,6 +21,9 @@
 
 namespace phongrast::detail {
 
+/// Rows of samples per band: the unit of work of the fill (binning.hpp).
+constexpr int kBandRows = 16;
+
 /// One triangle ready to fill: 144 bytes in float on 64-bit targets (`source` fills what was padding). The varyings are not
 /// copied: they stay in the mesh's vertex array (or, for the corners clipping
 /// creates, in the draw list's own storage), and the triangle points to them.

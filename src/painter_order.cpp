@@ -1,23 +1,27 @@
 #include "painter_order.hpp"
 
-#include <tbb/blocked_range.h>
+#include <algorithm>
+
 #include <tbb/parallel_for.h>
 
 namespace phongrast::detail {
 
-void painter_order(const std::vector<Triangle>& triangles, const std::vector<double>& camera_depth,
-                   PainterOrderMemory& memory, std::vector<std::uint32_t>& order, ProgressMonitor& progress) {
-    std::vector<double>& depth = memory.mean_depth;
-    depth.resize(triangles.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), 16384),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t t = range.begin(); t != range.end(); ++t) {
-            const Triangle& tri = triangles[t];
-            depth[t] = (camera_depth[tri[0]] + camera_depth[tri[1]] + camera_depth[tri[2]]) / 3.0;
-        }
+void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
+                   const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks,
+                   PainterOrderMemory& memory, ProgressMonitor& progress) {
+    std::vector<std::size_t>& offsets = memory.chunk_offsets;
+    offsets.resize(chunks + 1);
+    offsets[0] = 0;
+    for (std::size_t chunk = 0; chunk < chunks; ++chunk) offsets[chunk + 1] = offsets[chunk] + chunk_drawn[chunk].size();
+    const std::size_t total = offsets[chunks];
+    memory.drawn.resize(total);
+    memory.sort.keys.resize(total);
+    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+        std::copy(chunk_drawn[chunk].begin(), chunk_drawn[chunk].end(), memory.drawn.begin() + offsets[chunk]);
+        std::copy(chunk_keys[chunk].begin(), chunk_keys[chunk].end(), memory.sort.keys.begin() + offsets[chunk]);
     });
-    progress.begin_stage(0.1, 0.15, 1);
-    farthest_first_order(depth, order, memory.sort, progress.poll_function());
+    progress.begin_stage(0.35, 0.4, 1);
+    order_by_keys(total, memory.order, memory.sort, progress.poll_function());
 }
 
 }  // namespace phongrast::detail

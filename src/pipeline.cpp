@@ -30,12 +30,11 @@ void render_pass(const Scene& scene, const RenderOptions& options, int rows, int
                                stats);
     }
 
-    painter_order(scene.mesh.triangles, memory.vertices.camera_depth, memory.painter, memory.order, progress);
-
+    // Set-up first, in mesh order; then painter's order of what draws; then bands in that order.
     const SetupInput<Real> setup{scene, options, view, memory.vertices, cull, point_shader, fill_plan.setup};
-    set_up_triangles(setup, memory.order, memory.draws, stats, progress);
-
-    bin_draws(memory.draws, rows, memory.binning, memory.bins);
+    set_up_triangles(setup, memory.draws, stats, progress);
+    painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, memory.painter, progress);
+    bin_draws(memory.draws, memory.painter, rows, memory.binning, memory.bins);
 
     progress.begin_stage(0.4, out.aov_planes.any() ? 0.9 : 1.0, static_cast<std::size_t>(memory.bins.bands));
     fill_bins(scene, options, fill_plan, memory.bins, rows, columns, memory.fill, out.image, stats, progress);

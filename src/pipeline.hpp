@@ -28,9 +28,8 @@ struct FrameMemory {
     VertexStageMemory<Real> vertex_stage;
     TransformedVertices<Real> vertices;
     LightRig<Real> rig;
-    PainterOrderMemory painter;
-    std::vector<std::uint32_t> order;  ///< triangle indices in painter's order
     DrawList<Real> draws;
+    PainterOrderMemory painter;
     BinningMemory binning;
     Bins<Real> bins;
     FillMemory<Real> fill;

@@ -6,7 +6,7 @@
 
 #include "back_faces.hpp"
 #include "clipping.hpp"
-#include "prefetch.hpp"
+#include "painter_order.hpp"
 #include "raster.hpp"
 #include "term_counts.hpp"
 
@@ -222,16 +222,19 @@ private:
     LightVectorsAt<Real>& vectors_;
 };
 
-// Painter's order visits the vertices in no particular order: ask for a
-// triangle's vertex data a few triangles before it is set up.
+/// Records where the draws of the triangle just set up are, and its painter's-order key.
 template <typename Real>
-void prefetch_vertices(const TransformedVertices<Real>& vertices, const Triangle& tri) {
-    for (std::uint32_t index : tri) {
-        prefetch_address(&vertices.column[index]);
-        prefetch_address(&vertices.row[index]);
-        prefetch_address(&vertices.camera_depth[index]);
-        prefetch_object(&vertices.varyings[index]);
+void record_drawn(const std::vector<DrawTriangle<Real>>& out, std::size_t first, std::uint32_t chunk,
+                  std::uint64_t key, std::vector<DrawnTriangle>& drawn, std::vector<std::uint64_t>& keys) {
+    int row_min = out[first].coverage.row_min, row_max = out[first].coverage.row_max;
+    for (std::size_t d = first + 1; d < out.size(); ++d) {
+        row_min = std::min(row_min, out[d].coverage.row_min);
+        row_max = std::max(row_max, out[d].coverage.row_max);
     }
+    // Bands fit 16 bits: images are at most kMaxImageSide = 2^19 samples high.
+    drawn.push_back({chunk, static_cast<std::uint32_t>(first), static_cast<std::uint16_t>(out.size() - first),
+                     static_cast<std::uint16_t>(row_min / kBandRows), static_cast<std::uint16_t>(row_max / kBandRows)});
+    keys.push_back(key);
 }
 
 void add_counts(const SetupCounts& counts, RenderStats& stats) {
@@ -253,29 +256,41 @@ void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::v
 }
 
 template <typename Real>
-void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint32_t>& order, DrawList<Real>& draws,
-                      RenderStats& stats, ProgressMonitor& progress) {
-    const std::size_t chunks = (order.size() + kSetupChunk - 1) / kSetupChunk;
+void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, RenderStats& stats,
+                      ProgressMonitor& progress) {
+    const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
+    const std::size_t chunks = (triangles.size() + kSetupChunk - 1) / kSetupChunk;
     if (draws.chunk_draws.size() < chunks) draws.chunk_draws.resize(chunks);
+    if (draws.chunk_drawn.size() < chunks) draws.chunk_drawn.resize(chunks);
+    if (draws.chunk_keys.size() < chunks) draws.chunk_keys.resize(chunks);
     if (draws.chunk_clip_vertices.size() < chunks) draws.chunk_clip_vertices.resize(chunks);
     if (draws.chunk_vectors.size() < chunks) draws.chunk_vectors.resize(chunks);
     draws.chunk_counts.assign(chunks, SetupCounts{});
     draws.chunks = chunks;
-    const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
-    progress.begin_stage(0.15, 0.4, chunks);
+    const std::vector<double>& camera_depth = input.vertices.camera_depth;
+    progress.begin_stage(0.1, 0.35, chunks);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
         if (progress.cancelled()) return;
         const std::size_t begin = chunk * kSetupChunk;
-        const std::size_t end = std::min(order.size(), begin + kSetupChunk);
+        const std::size_t end = std::min(triangles.size(), begin + kSetupChunk);
         std::vector<DrawTriangle<Real>>& out = draws.chunk_draws[chunk];
+        std::vector<DrawnTriangle>& drawn = draws.chunk_drawn[chunk];
+        std::vector<std::uint64_t>& keys = draws.chunk_keys[chunk];
         out.clear();
         out.reserve(end - begin);
+        drawn.clear();
+        drawn.reserve(end - begin);
+        keys.clear();
+        keys.reserve(end - begin);
         draws.chunk_clip_vertices[chunk].clear();
         TriangleSetup<Real> setup(input, out, draws.chunk_clip_vertices[chunk], draws.chunk_counts[chunk],
                                   draws.chunk_vectors[chunk]);
-        for (std::size_t k = begin; k < end; ++k) {
-            if (k + kPrefetchAhead < end) prefetch_vertices(input.vertices, triangles[order[k + kPrefetchAhead]]);
-            setup.run(order[k]);
+        for (std::size_t t = begin; t < end; ++t) {
+            const std::size_t first = out.size();
+            setup.run(static_cast<std::uint32_t>(t));
+            if (out.size() == first) continue;
+            record_drawn(out, first, static_cast<std::uint32_t>(chunk), painter_key(triangles[t], camera_depth), drawn,
+                         keys);
         }
         progress.piece_done();
     });
@@ -288,8 +303,8 @@ void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint
 }
 
 #define PHONGRAST_INSTANTIATE_SETUP(Real)                                                                       \
-    template void set_up_triangles<Real>(const SetupInput<Real>&, const std::vector<std::uint32_t>&,            \
-                                         DrawList<Real>&, RenderStats&, ProgressMonitor&);                      \
+    template void set_up_triangles<Real>(const SetupInput<Real>&, DrawList<Real>&, RenderStats&,                \
+                                         ProgressMonitor&);                                                     \
     template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, std::vector<DrawTriangle<Real>>&, \
                                         ClipVertexStore<Real>&, SetupCounts&, LightVectorsAt<Real>&);
 PHONGRAST_INSTANTIATE_SETUP(float)

@@ -44,13 +44,27 @@ struct SetupCounts {
     std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during set-up
 };
 
-/// Set-up's output: the draw triangles in painter's order, chunk after
-/// chunk, each chunk in order. Fixed-size chunks make the list the same
-/// whatever the number of threads. Kept from frame to frame.
+/// A mesh triangle that set-up turned into draws, as painter's order and
+/// binning see it: 16 bytes, so that sorting and binning do not read the
+/// draws themselves.
+struct DrawnTriangle {
+    std::uint32_t chunk;  ///< the set-up chunk whose draw list holds its draws
+    std::uint32_t first;  ///< its first draw there; its draws follow one another
+    std::uint16_t count;  ///< its draws: one, or one per piece of its clipped polygon
+    std::uint16_t band_first, band_last;  ///< bands of kBandRows rows its draws touch
+};
+
+/// Set-up's output, in mesh order: chunk after chunk of kSetupChunk mesh
+/// triangles, each chunk's draws in mesh order, and for each triangle that
+/// draws something its painter's-order key and where its draws are.
+/// Fixed-size chunks make the list the same whatever the number of threads.
+/// Kept from frame to frame.
 template <typename Real>
 struct DrawList {
     std::size_t chunks = 0;  ///< chunks of this frame (the vectors may hold more from earlier frames)
     std::vector<std::vector<DrawTriangle<Real>>> chunk_draws;
+    std::vector<std::vector<DrawnTriangle>> chunk_drawn;
+    std::vector<std::vector<std::uint64_t>> chunk_keys;  ///< farthest_first_key() of each drawn triangle's mean z_c
     std::vector<ClipVertexStore<Real>> chunk_clip_vertices;
     std::vector<SetupCounts> chunk_counts;
     std::vector<LightVectorsAt<Real>> chunk_vectors;  ///< per chunk, not per thread (see light_vertices())
@@ -68,12 +82,16 @@ struct SetupInput {
     const FillSetup<Real>& fill;      ///< the uniform surface colour, when there is one
 };
 
-/// Sets up every triangle of `order` (painter's order) into `draws` and adds
-/// the triangle counts and the lighting done to `stats`. Reports progress,
-/// and stops early when the render is cancelled.
+/// Sets up every triangle of the mesh, in mesh order, into `draws` and adds
+/// the triangle counts and the lighting done to `stats`. Set-up does not
+/// depend on the order of triangles, so it walks the vertex arrays in the
+/// order the mesh lists them (far fewer cache misses than painter's order)
+/// and leaves the ordering to painter_order(), which then sorts only the
+/// triangles that draw something. Reports progress, and stops early when
+/// the render is cancelled.
 template <typename Real>
-void set_up_triangles(const SetupInput<Real>& input, const std::vector<std::uint32_t>& order, DrawList<Real>& draws,
-                      RenderStats& stats, ProgressMonitor& progress);
+void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, RenderStats& stats,
+                      ProgressMonitor& progress);
 
 /// Sets up mesh triangle `source`: appends its draw triangles (none, one, or
 /// one per piece of its clipped polygon) to `out` and counts it in `counts`.

@@ -19,28 +19,40 @@ pd::DrawTriangle<float> draw_over_rows(int row_min, int row_max) {
 
 }  // namespace
 
-TEST_CASE("bins keep painter's order within each band across set-up chunks") {
+/// A drawn triangle of one draw, as set-up records it.
+pd::DrawnTriangle one_draw(std::uint32_t chunk, std::uint32_t first, int row_min, int row_max) {
+    return {chunk, first, 1, static_cast<std::uint16_t>(row_min / pd::kBandRows),
+            static_cast<std::uint16_t>(row_max / pd::kBandRows)};
+}
+
+TEST_CASE("bins follow painter's order within each band, whatever chunk a draw came from") {
     constexpr int kRows = 40;  // bands of 16 rows: [0, 16), [16, 32), [32, 40)
     pd::DrawList<float> list;
     list.chunks = 2;
     list.chunk_draws.resize(3);  // a stale third chunk from an earlier frame must be ignored
     list.chunk_draws[0] = {draw_over_rows(0, 3), draw_over_rows(10, 20), draw_over_rows(33, 39)};
-    list.chunk_draws[1] = {draw_over_rows(15, 16), draw_over_rows(0, 39)};
+    // Chunk 1: one triangle, then a clipped one whose two pieces touch different bands.
+    list.chunk_draws[1] = {draw_over_rows(15, 16), draw_over_rows(0, 5), draw_over_rows(30, 39)};
     list.chunk_draws[2] = {draw_over_rows(0, 39)};
     const auto& a = list.chunk_draws[0];
     const auto& b = list.chunk_draws[1];
 
+    pd::PainterOrderMemory painter;
+    painter.drawn = {one_draw(0, 0, 0, 3), one_draw(0, 1, 10, 20), one_draw(0, 2, 33, 39), one_draw(1, 0, 15, 16),
+                     {1, 1, 2, 0, 2}};
+    painter.order = {4, 1, 3, 0, 2};  // painter's order: b's clipped triangle first, then a1, b0, a0, a2
+
     pd::BinningMemory memory;
     pd::Bins<float> bins;
-    pd::bin_draws(list, kRows, memory, bins);
+    pd::bin_draws(list, painter, kRows, memory, bins);
     REQUIRE(bins.bands == 3);
     const auto band = [&](int index) {
         return std::vector<const pd::DrawTriangle<float>*>(bins.band_draws(index),
                                                            bins.band_draws(index) + bins.band_size(index));
     };
-    CHECK(band(0) == std::vector<const pd::DrawTriangle<float>*>{&a[0], &a[1], &b[0], &b[1]});
-    CHECK(band(1) == std::vector<const pd::DrawTriangle<float>*>{&a[1], &b[0], &b[1]});
-    CHECK(band(2) == std::vector<const pd::DrawTriangle<float>*>{&a[2], &b[1]});
+    CHECK(band(0) == std::vector<const pd::DrawTriangle<float>*>{&b[1], &a[1], &b[0], &a[0]});
+    CHECK(band(1) == std::vector<const pd::DrawTriangle<float>*>{&b[2], &a[1], &b[0]});
+    CHECK(band(2) == std::vector<const pd::DrawTriangle<float>*>{&b[2], &a[2]});
     CHECK(bins.draws.size() == 9);
 }
 
@@ -49,12 +61,17 @@ TEST_CASE("binning an empty frame after a full one leaves empty bands") {
     list.chunks = 1;
     list.chunk_draws.resize(1);
     list.chunk_draws[0] = {draw_over_rows(0, 63)};
+    pd::PainterOrderMemory painter;
+    painter.drawn = {one_draw(0, 0, 0, 63)};
+    painter.order = {0};
     pd::BinningMemory memory;
     pd::Bins<float> bins;
-    pd::bin_draws(list, 64, memory, bins);
+    pd::bin_draws(list, painter, 64, memory, bins);
     CHECK(bins.draws.size() == 4);
     list.chunk_draws[0].clear();
-    pd::bin_draws(list, 64, memory, bins);
+    painter.drawn.clear();
+    painter.order.clear();
+    pd::bin_draws(list, painter, 64, memory, bins);
     REQUIRE(bins.bands == 4);
     for (int b = 0; b < bins.bands; ++b) CHECK(bins.band_size(b) == 0);
 }
