@@ -103,6 +103,12 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     plan.effects = effects;
     plan.depth_test = options.visibility == Visibility::depth_buffer;
     plan.shade_visible_only = !plan.depth_test && overdraw_shades_visible_only(scene, options, effects);
+    // Gouraud is left out: its kernel interpolates three equal corner colours
+    // with weights that need not sum to exactly 1, so triangles can differ in
+    // the last bit. Phong's unlit kernel and flat write the colour itself.
+    const bool one_color = options.specialize_effects && scene.shader != Shader::gouraud && !effects.diffuse &&
+                           !effects.specular && !effects.varying_colors;
+    plan.order_free = one_color && !plan.depth_test && !plan.shade_visible_only;
     return plan;
 }
 

@@ -38,6 +38,11 @@ struct FillPlan {
     FillSetup<Real> setup;
     bool depth_test = false;         ///< Visibility::depth_buffer
     bool shade_visible_only = false; ///< Overdraw::shade_visible in effect
+    /// Every covered sample gets one and the same colour (a uniform colour,
+    /// no diffuse or specular term, a kernel that writes it as it is), and
+    /// nothing but the image depends on which triangle wrote it last: the
+    /// order of the triangles cannot change the picture, so it is not sorted.
+    bool order_free = false;
     EffectSet effects;               ///< what the kernel evaluates (for the term counts)
 };
 

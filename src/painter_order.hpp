@@ -33,9 +33,10 @@ struct PainterOrderMemory {
 /// order) into memory.drawn and sorts them into memory.order: farthest mean
 /// z_c first, equal depths in mesh order. Triangles that draw nothing are
 /// not sorted at all; leaving them out changes no draw's place relative to
-/// another's. Reports progress through `progress`.
+/// another's. With `sort` false (the order cannot change the picture), the
+/// order is mesh order. Reports progress through `progress`.
 void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
-                   const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks,
+                   const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
                    PainterOrderMemory& memory, ProgressMonitor& progress);
 
 }  // namespace phongrast::detail

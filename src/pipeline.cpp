@@ -33,7 +33,10 @@ void render_pass(const Scene& scene, const RenderOptions& options, int rows, int
     // Set-up first, in mesh order; then painter's order of what draws; then bands in that order.
     const SetupInput<Real> setup{scene, options, view, memory.vertices, cull, point_shader, fill_plan.setup};
     set_up_triangles(setup, memory.draws, stats, progress);
-    painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, memory.painter, progress);
+    const bool sort = !fill_plan.order_free || out.aov_planes.any();  // depth and id name the last triangle
+    painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, sort, memory.painter,
+                  progress);
+    if (sort) stats.triangles_sorted += memory.painter.drawn.size();
     bin_draws(memory.draws, memory.painter, rows, memory.binning, memory.bins);
 
     progress.begin_stage(0.4, out.aov_planes.any() ? 0.9 : 1.0, static_cast<std::size_t>(memory.bins.bands));

@@ -16,6 +16,7 @@ const std::vector<RenderCounter>& render_counters() {
         {"triangles_outside", &RenderStats::triangles_outside, true},
         {"triangles_between_samples", &RenderStats::triangles_between_samples, true},
         {"triangles_drawn", &RenderStats::triangles_drawn, true},
+        {"triangles_sorted", &RenderStats::triangles_sorted, true},
         {"samples_covered", &RenderStats::samples_covered, false},
         {"samples_shaded", &RenderStats::samples_shaded, false},
         {"nonfinite_values_replaced", &RenderStats::nonfinite_values_replaced, false},

@@ -96,6 +96,50 @@ TEST_CASE("ambient-only Phong interpolates no normal and evaluates no light") {
     CHECK(render(scene, general).stats.normal_interpolations == result.stats.samples_shaded);
 }
 
+TEST_CASE("a picture painter's order cannot change is not sorted") {
+    Scene scene = sphere_scene();  // seen from outside: back faces lie under front faces
+    scene.lighting = Lighting::only_ambient();
+    scene.mesh.colors.assign(scene.mesh.positions.size(), {0.3f, 0.6f, 0.9f});
+    for (Shader shader : {Shader::flat, Shader::phong}) {
+        INFO(to_string(shader));
+        scene.shader = shader;
+        const RenderResult unsorted = render(scene);
+        REQUIRE(unsorted.stats.triangles_drawn > 500);
+        CHECK(unsorted.stats.triangles_sorted == 0);
+        // The general kernel sorts (it evaluates every term), and paints the same picture.
+        const RenderResult sorted = render_with(scene, RenderOptions::exact(), false);
+        CHECK(sorted.stats.triangles_sorted == sorted.stats.triangles_drawn);
+        CHECK(unsorted.image.pixels == sorted.image.pixels);
+        CHECK(unsorted.stats.samples_shaded == sorted.stats.samples_shaded);
+    }
+    SECTION("Gouraud interpolates its corner colours, which may differ in the last bit: sorted") {
+        scene.shader = Shader::gouraud;
+        const RenderResult result = render(scene);
+        CHECK(result.stats.triangles_sorted == result.stats.triangles_drawn);
+    }
+    SECTION("varying colours: sorted") {
+        scene = sphere_scene();
+        scene.shader = Shader::phong;
+        scene.lighting = Lighting::only_ambient();
+        const RenderResult result = render(scene);
+        CHECK(result.stats.triangles_sorted == result.stats.triangles_drawn);
+    }
+    SECTION("an extra output that names the last triangle: sorted") {
+        scene.shader = Shader::phong;
+        RenderOptions options = RenderOptions::exact();
+        options.aovs.id = true;
+        const RenderResult result = render(scene, options);
+        CHECK(result.stats.triangles_sorted == result.stats.triangles_drawn);
+    }
+    SECTION("the depth buffer: sorted") {
+        scene.shader = Shader::phong;
+        RenderOptions options = RenderOptions::exact();
+        options.visibility = Visibility::depth_buffer;
+        const RenderResult result = render(scene, options);
+        CHECK(result.stats.triangles_sorted == result.stats.triangles_drawn);
+    }
+}
+
 TEST_CASE("a light of zero intensity costs no evaluation") {
     Scene scene = sphere_scene();
     scene.shader = Shader::phong;

@@ -151,6 +151,8 @@ struct RenderStats {
     std::uint64_t triangles_outside = 0;     ///< entirely outside the view: nothing to draw
     std::uint64_t triangles_between_samples = 0;  ///< in the view, but no sample centre inside (smaller than the sample spacing)
     std::uint64_t triangles_drawn = 0;       ///< reached the fill (possibly as several clipped pieces)
+    std::uint64_t triangles_sorted = 0;      ///< drawn triangles put into painter's order: 0 when every covered
+                                             ///< sample gets one colour and no extra output names a triangle
     std::uint64_t samples_covered = 0;       ///< samples inside drawn triangles, overdraw included (a sample is a pixel when samples_per_axis = 1)
     std::uint64_t samples_shaded = 0;        ///< samples shaded and written: samples_covered with Overdraw::shade_all
                                              ///< (depth buffer: those passing the test); the visible ones with shade_visible
