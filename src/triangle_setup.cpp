@@ -54,9 +54,7 @@ public:
             ++counts_.dropped;
             return;
         }
-        const std::vector<Varyings<Real>>& varyings = vertices_.varyings;
-        const Vec3<Real> centroid =
-            (varyings[tri[0]].position + varyings[tri[1]].position + varyings[tri[2]].position) / Real(3);
+        const Vec3<Real> centroid = centroid_if_lit_there(tri);
         const std::size_t first_draw = out_.size();
         const double near_depth = in_.view.near_depth;
         const bool whole = inside_image && vertices_.camera_depth[tri[0]] >= near_depth &&
@@ -81,6 +79,17 @@ public:
     }
 
 private:
+    /// The triangle's centroid (camera space) where flat shading or the
+    /// seed's light vectors light at it; else zero, unread, and the vertex
+    /// positions are not loaded at all.
+    Vec3<Real> centroid_if_lit_there(const Triangle& tri) const {
+        if (in_.scene.shader != Shader::flat && in_.options.light_vectors != LightVectors::triangle_centroid) {
+            return Vec3<Real>(Real(0));
+        }
+        const std::vector<Varyings<Real>>& varyings = vertices_.varyings;
+        return (varyings[tri[0]].position + varyings[tri[1]].position + varyings[tri[2]].position) / Real(3);
+    }
+
     void count(const PiecesOutcome& outcome) {
         if (outcome.drawn) {
             ++counts_.drawn;
@@ -129,8 +138,9 @@ private:
         DrawTriangle<Real> draw;
         int order[3];
         if (!set_up_piece(corner, centroid, draw, outcome, order)) return outcome;
-        if (in_.scene.shader == Shader::gouraud) {
+        if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid) {
             // Lit copies of the corners: light_corners() writes their `lit`, the mesh's vertices stay as they are.
+            // (Exact vectors: set_up_piece() copied the `lit` light_vertices() gave each vertex.)
             Varyings<Real> copies[3] = {*draw.v[0], *draw.v[1], *draw.v[2]};
             Varyings<Real>* corners[3] = {&copies[0], &copies[1], &copies[2]};
             counts_.lit_points += light_corners(corners, centroid);
