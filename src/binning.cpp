@@ -4,8 +4,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "prefetch.hpp"
-
 namespace phongrast::detail {
 namespace {
 
@@ -55,15 +53,12 @@ void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, i
                Bins<Real>& bins) {
     bins.bands = (rows + kBandRows - 1) / kBandRows;
     const std::size_t bands = static_cast<std::size_t>(bins.bands);
-    const std::vector<std::uint32_t>& order = painter.order;
-    const std::size_t blocks = (order.size() + kBinningBlock - 1) / kBinningBlock;
+    const std::vector<PaintRecord>& sorted = painter.sorted;
+    const std::size_t blocks = (sorted.size() + kBinningBlock - 1) / kBinningBlock;
     // Calls visit(band, draw) for every draw of block `block`, in painter's order.
     const auto for_each_draw_of_block = [&](std::size_t block, auto&& visit) {
-        const std::size_t end = std::min(order.size(), (block + 1) * kBinningBlock);
-        for (std::size_t k = block * kBinningBlock; k < end; ++k) {
-            if (k + kPrefetchAhead < end) prefetch_address(&painter.drawn[order[k + kPrefetchAhead]]);
-            for_each_band(draws, painter.drawn[order[k]], visit);
-        }
+        const std::size_t end = std::min(sorted.size(), (block + 1) * kBinningBlock);
+        for (std::size_t k = block * kBinningBlock; k < end; ++k) for_each_band(draws, sorted[k].drawn, visit);
     };
     memory.block_band_count.assign(blocks * bands, 0);
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {

@@ -31,8 +31,7 @@ struct BinningMemory {
 };
 
 /// Bins the draws of an image `rows` samples high, triangle by triangle in
-/// painter's order (painter.order into painter.drawn, whose draws are in
-/// `draws`). Counted and scattered in parallel over fixed blocks of that
+/// painter's order (painter.sorted, whose draws are in `draws`). Counted and scattered in parallel over fixed blocks of that
 /// order, each block writing its own slice of every band: the same bins for
 /// any number of threads.
 template <typename Real>

@@ -1,33 +1,181 @@
 #include "painter_order.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <limits>
 
 #include <tbb/parallel_for.h>
 
 namespace phongrast::detail {
+namespace {
 
-void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
-                   const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
-                   PainterOrderMemory& memory, ProgressMonitor& progress) {
+using painter_sort::Counts;
+using painter_sort::kBuckets;
+using painter_sort::kDigitBits;
+
+/// Set-up chunks per group: a group (65,536 triangles) counts and scatters its records as one task.
+constexpr std::size_t kGroupChunks = 16;
+
+/// Bits needed for `range`: 0 for 0, 64 for the largest.
+int bit_width(std::uint64_t range) {
+    int bits = 0;
+    for (; range != 0; range >>= 1) ++bits;
+    return bits;
+}
+
+/// A radix digit: the `bits` bits of key - base just below bit `shift`
+/// (every key of the records it sorts agrees with base on the bits above).
+struct Digit {
+    std::uint64_t base;
+    int shift;
+    int bits;
+    Digit(std::uint64_t base_, int shift_) : base(base_), shift(shift_), bits(std::min(shift_, kDigitBits)) {}
+    std::size_t operator()(std::uint64_t key) const {
+        return static_cast<std::size_t>(((key - base) >> (shift - bits)) & ((std::uint64_t(1) << bits) - 1));
+    }
+};
+
+/// Sorts n records, in mesh order, whose keys agree with `base` above bit
+/// `shift`, stably by key: by insertion when there are a few, else by
+/// least-significant-digit radix passes of 8 bits (256 counters, cheap for a
+/// bucket of a few hundred records) through `scratch` (room for n records).
+/// Stability keeps ties in mesh order.
+void sort_bucket(PaintRecord* data, PaintRecord* scratch, std::size_t n, std::uint64_t base, int shift) {
+    if (n <= 32) {
+        for (std::size_t i = 1; i < n; ++i) {
+            const PaintRecord record = data[i];
+            std::size_t j = i;
+            for (; j > 0 && data[j - 1].key > record.key; --j) data[j] = data[j - 1];
+            data[j] = record;
+        }
+        return;
+    }
+    PaintRecord* from = data;
+    PaintRecord* to = scratch;
+    for (int low = 0; low < shift; low += 8) {
+        std::array<std::uint32_t, 256> start{};
+        for (std::size_t i = 0; i < n; ++i) ++start[((from[i].key - base) >> low) & 0xff];
+        if (std::any_of(start.begin(), start.end(), [n](std::uint32_t c) { return c == n; })) continue;
+        std::uint32_t total = 0;
+        for (std::uint32_t& count : start) {
+            const std::uint32_t size = count;
+            count = total;
+            total += size;
+        }
+        for (std::size_t i = 0; i < n; ++i) to[start[((from[i].key - base) >> low) & 0xff]++] = from[i];
+        std::swap(from, to);
+    }
+    if (from != data) std::copy(from, from + n, data);
+}
+
+/// Calls visit(key, drawn) for every record of group `group`, in mesh order.
+template <typename Visit>
+void for_each_record(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
+                     const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, std::size_t group,
+                     Visit&& visit) {
+    const std::size_t end = std::min(chunks, (group + 1) * kGroupChunks);
+    for (std::size_t chunk = group * kGroupChunks; chunk < end; ++chunk) {
+        for (std::size_t i = 0; i < chunk_drawn[chunk].size(); ++i) visit(chunk_keys[chunk][i], chunk_drawn[chunk][i]);
+    }
+}
+
+/// No sort: the records in mesh order.
+void keep_mesh_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
+                     const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks,
+                     PainterOrderMemory& memory) {
     std::vector<std::size_t>& offsets = memory.chunk_offsets;
     offsets.resize(chunks + 1);
     offsets[0] = 0;
     for (std::size_t chunk = 0; chunk < chunks; ++chunk) offsets[chunk + 1] = offsets[chunk] + chunk_drawn[chunk].size();
-    const std::size_t total = offsets[chunks];
-    memory.drawn.resize(total);
-    if (sort) memory.sort.keys.resize(total);
+    memory.sorted.resize(offsets[chunks]);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
-        std::copy(chunk_drawn[chunk].begin(), chunk_drawn[chunk].end(), memory.drawn.begin() + offsets[chunk]);
-        if (sort) std::copy(chunk_keys[chunk].begin(), chunk_keys[chunk].end(), memory.sort.keys.begin() + offsets[chunk]);
+        PaintRecord* out = memory.sorted.data() + offsets[chunk];
+        for (std::size_t i = 0; i < chunk_drawn[chunk].size(); ++i) out[i] = {chunk_keys[chunk][i], chunk_drawn[chunk][i]};
     });
-    progress.begin_stage(0.35, 0.4, 1);
-    if (sort) {
-        order_by_keys(total, memory.order, memory.sort, progress.poll_function());
-    } else {
-        memory.order.resize(total);
-        std::iota(memory.order.begin(), memory.order.end(), 0u);
+}
+
+}  // namespace
+
+void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
+                   const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
+                   PainterOrderMemory& memory, ProgressMonitor& progress) {
+    if (!sort) {
+        keep_mesh_order(chunk_drawn, chunk_keys, chunks, memory);
+        return;
     }
+    const std::size_t groups = (chunks + kGroupChunks - 1) / kGroupChunks;
+    progress.begin_stage(0.35, 0.4, 3 * groups);
+    // The keys' range: the top-level digit starts at its highest differing bit.
+    memory.group_min.assign(groups, std::numeric_limits<std::uint64_t>::max());
+    memory.group_max.assign(groups, 0);
+    tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
+        for_each_record(chunk_drawn, chunk_keys, chunks, group, [&](std::uint64_t key, const DrawnTriangle&) {
+            memory.group_min[group] = std::min(memory.group_min[group], key);
+            memory.group_max[group] = std::max(memory.group_max[group], key);
+        });
+        progress.piece_done();
+    });
+    const std::uint64_t base = groups == 0 ? 0 : *std::min_element(memory.group_min.begin(), memory.group_min.end());
+    const std::uint64_t top = groups == 0 ? 0 : *std::max_element(memory.group_max.begin(), memory.group_max.end());
+    const int shift = top > base ? bit_width(top - base) : 0;
+    const Digit digit(base, shift);
+
+    // Counted per group, laid out bucket after bucket, each bucket group after group: a stable scatter.
+    memory.group_counts.resize(groups);
+    tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
+        Counts& counts = memory.group_counts[group];
+        counts.fill(0);
+        for_each_record(chunk_drawn, chunk_keys, chunks, group,
+                        [&](std::uint64_t key, const DrawnTriangle&) { ++counts[digit(key)]; });
+    });
+    std::vector<std::size_t>& bucket_start = memory.chunk_offsets;  // reused: kBuckets + 1 offsets here
+    bucket_start.assign(kBuckets + 1, 0);
+    std::uint32_t total = 0;
+    for (std::size_t b = 0; b < kBuckets; ++b) {
+        bucket_start[b] = total;
+        for (Counts& counts : memory.group_counts) {
+            const std::uint32_t size = counts[b];
+            counts[b] = total;
+            total += size;
+        }
+    }
+    bucket_start[kBuckets] = total;
+    memory.sorted.resize(total);
+    tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
+        Counts& cursor = memory.group_counts[group];
+        for_each_record(chunk_drawn, chunk_keys, chunks, group, [&](std::uint64_t key, const DrawnTriangle& drawn) {
+            memory.sorted[cursor[digit(key)]++] = {key, drawn};
+        });
+        progress.piece_done();
+    });
+
+    memory.scratch.resize(total);
+    tbb::parallel_for(std::size_t(0), kBuckets, [&](std::size_t b) {
+        if (progress.cancelled()) return;
+        sort_bucket(memory.sorted.data() + bucket_start[b], memory.scratch.data() + bucket_start[b],
+                    bucket_start[b + 1] - bucket_start[b], base, shift - digit.bits);
+    });
+    for (std::size_t group = 0; group < groups; ++group) progress.piece_done();
+    progress.throw_if_cancelled();
+}
+
+std::vector<std::uint32_t> farthest_first_order(const std::vector<double>& depth) {
+    constexpr std::size_t kChunk = 4096;  // as set-up's chunks, so that ties cross chunks and groups
+    const std::size_t chunks = (depth.size() + kChunk - 1) / kChunk;
+    std::vector<std::vector<DrawnTriangle>> chunk_drawn(chunks);
+    std::vector<std::vector<std::uint64_t>> chunk_keys(chunks);
+    for (std::size_t i = 0; i < depth.size(); ++i) {
+        chunk_drawn[i / kChunk].push_back(
+            {static_cast<std::uint32_t>(i / kChunk), static_cast<std::uint32_t>(i % kChunk), 1, 0, 0});
+        chunk_keys[i / kChunk].push_back(farthest_first_key(depth[i]));
+    }
+    PainterOrderMemory memory;
+    ProgressMonitor progress(nullptr);
+    painter_order(chunk_drawn, chunk_keys, chunks, true, memory, progress);
+    std::vector<std::uint32_t> order;
+    for (const PaintRecord& record : memory.sorted) {
+        order.push_back(static_cast<std::uint32_t>(record.drawn.chunk * kChunk + record.drawn.first));
+    }
+    return order;
 }
 
 }  // namespace phongrast::detail

@@ -36,7 +36,7 @@ void render_pass(const Scene& scene, const RenderOptions& options, int rows, int
     const bool sort = !fill_plan.order_free || out.aov_planes.any();  // depth and id name the last triangle
     painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, sort, memory.painter,
                   progress);
-    if (sort) stats.triangles_sorted += memory.painter.drawn.size();
+    if (sort) stats.triangles_sorted += memory.painter.sorted.size();
     bin_draws(memory.draws, memory.painter, rows, memory.binning, memory.bins);
 
     progress.begin_stage(0.4, out.aov_planes.any() ? 0.9 : 1.0, static_cast<std::size_t>(memory.bins.bands));

@@ -38,9 +38,9 @@ TEST_CASE("bins follow painter's order within each band, whatever chunk a draw c
     const auto& b = list.chunk_draws[1];
 
     pd::PainterOrderMemory painter;
-    painter.drawn = {one_draw(0, 0, 0, 3), one_draw(0, 1, 10, 20), one_draw(0, 2, 33, 39), one_draw(1, 0, 15, 16),
-                     {1, 1, 2, 0, 2}};
-    painter.order = {4, 1, 3, 0, 2};  // painter's order: b's clipped triangle first, then a1, b0, a0, a2
+    // Painter's order: b's clipped triangle first, then a1, b0, a0, a2.
+    painter.sorted = {{0, {1, 1, 2, 0, 2}}, {1, one_draw(0, 1, 10, 20)}, {2, one_draw(1, 0, 15, 16)},
+                      {3, one_draw(0, 0, 0, 3)}, {4, one_draw(0, 2, 33, 39)}};
 
     pd::BinningMemory memory;
     pd::Bins<float> bins;
@@ -62,15 +62,13 @@ TEST_CASE("binning an empty frame after a full one leaves empty bands") {
     list.chunk_draws.resize(1);
     list.chunk_draws[0] = {draw_over_rows(0, 63)};
     pd::PainterOrderMemory painter;
-    painter.drawn = {one_draw(0, 0, 0, 63)};
-    painter.order = {0};
+    painter.sorted = {{0, one_draw(0, 0, 0, 63)}};
     pd::BinningMemory memory;
     pd::Bins<float> bins;
     pd::bin_draws(list, painter, 64, memory, bins);
     CHECK(bins.draws.size() == 4);
     list.chunk_draws[0].clear();
-    painter.drawn.clear();
-    painter.order.clear();
+    painter.sorted.clear();
     pd::bin_draws(list, painter, 64, memory, bins);
     REQUIRE(bins.bands == 4);
     for (int b = 0; b < bins.bands; ++b) CHECK(bins.band_size(b) == 0);

@@ -1,4 +1,4 @@
-// The radix painter's sort gives std::stable_sort's order exactly.
+// The painter's sort gives std::stable_sort's order exactly.
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -7,7 +7,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "depth_sort.hpp"
+#include "painter_order.hpp"
 
 using phongrast::detail::farthest_first_order;
 
@@ -54,5 +54,21 @@ TEST_CASE("radix painter's order of depths sharing their high bits") {
     std::vector<double> depth(20000);
     for (double& d : depth) d = spread(random);
     for (std::size_t i = 0; i < depth.size(); i += 7) depth[i] = depth[i / 2];
+    CHECK(farthest_first_order(depth) == reference_order(depth));
+}
+
+TEST_CASE("painter's order when most depths fall into one leading-bits bucket") {
+    // One far outlier stretches the keys' range, so the leading bits put
+    // nearly every other depth into one bucket, too large to sort in cache:
+    // it is split again by the next bits. Ties and nearby values throughout.
+    std::mt19937_64 random(10);
+    std::uniform_real_distribution<double> spread(2.0, 2.0001);
+    std::vector<double> depth(60000);
+    for (double& d : depth) d = spread(random);
+    for (std::size_t i = 0; i < depth.size(); i += 5) depth[i] = depth[i / 3];
+    depth[12345] = 1e12;
+    depth[23456] = -1e12;
+    CHECK(farthest_first_order(depth) == reference_order(depth));
+    std::fill(depth.begin(), depth.end(), 4.25);  // every key equal: mesh order
     CHECK(farthest_first_order(depth) == reference_order(depth));
 }
