@@ -35,11 +35,12 @@ struct Digit {
 };
 
 /// Sorts n records, in mesh order, whose keys agree with `base` above bit
-/// `shift`, stably by key: by insertion when there are a few, else by
-/// least-significant-digit radix passes of 8 bits (256 counters, cheap for a
-/// bucket of a few hundred records) through `scratch` (room for n records).
-/// Stability keeps ties in mesh order.
+/// `shift`, stably by key: a few by insertion, more by a radix pass on the
+/// next 8 bits (256 counters: cheap for the few hundred records of a typical
+/// bucket) through `scratch` (room for n records), then each part the same
+/// way. Stability keeps ties in mesh order.
 void sort_bucket(PaintRecord* data, PaintRecord* scratch, std::size_t n, std::uint64_t base, int shift) {
+    if (shift == 0) return;  // all keys equal: mesh order is the order
     if (n <= 32) {
         for (std::size_t i = 1; i < n; ++i) {
             const PaintRecord record = data[i];
@@ -49,22 +50,21 @@ void sort_bucket(PaintRecord* data, PaintRecord* scratch, std::size_t n, std::ui
         }
         return;
     }
-    PaintRecord* from = data;
-    PaintRecord* to = scratch;
-    for (int low = 0; low < shift; low += 8) {
-        std::array<std::uint32_t, 256> start{};
-        for (std::size_t i = 0; i < n; ++i) ++start[((from[i].key - base) >> low) & 0xff];
-        if (std::any_of(start.begin(), start.end(), [n](std::uint32_t c) { return c == n; })) continue;
-        std::uint32_t total = 0;
-        for (std::uint32_t& count : start) {
-            const std::uint32_t size = count;
-            count = total;
-            total += size;
-        }
-        for (std::size_t i = 0; i < n; ++i) to[start[((from[i].key - base) >> low) & 0xff]++] = from[i];
-        std::swap(from, to);
+    const int low = std::max(0, shift - 8);
+    const auto digit = [base, low](std::uint64_t key) { return static_cast<std::size_t>(((key - base) >> low) & 0xff); };
+    std::array<std::uint32_t, 257> start{};
+    for (std::size_t i = 0; i < n; ++i) ++start[digit(data[i].key) + 1];
+    if (std::any_of(start.begin(), start.end(), [n](std::uint32_t c) { return c == n; })) {
+        sort_bucket(data, scratch, n, base, low);  // these 8 bits are all alike
+        return;
     }
-    if (from != data) std::copy(from, from + n, data);
+    for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+    std::array<std::uint32_t, 257> cursor = start;
+    for (std::size_t i = 0; i < n; ++i) scratch[cursor[digit(data[i].key)]++] = data[i];
+    std::copy(scratch, scratch + n, data);
+    for (std::size_t d = 0; d < 256; ++d) {
+        sort_bucket(data + start[d], scratch + start[d], start[d + 1] - start[d], base, low);
+    }
 }
 
 /// Calls visit(key, drawn) for every record of group `group`, in mesh order.
