@@ -1,6 +1,9 @@
 #include "vertex_stage.hpp"
 
+#include "normalize_lanes.hpp"
+
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <tbb/blocked_range.h>
@@ -13,6 +16,25 @@ namespace {
 constexpr std::size_t kTransformBlock = 4096;
 /// Vertices lit by one task (Gouraud with exact light vectors).
 constexpr std::size_t kLightingBlock = 1024;
+
+/// The unit camera-space normals of vertices [begin, end), into their varyings.
+template <typename Real>
+void camera_normals(const CameraFrame& frame, const std::vector<glm::vec3>& normals, std::size_t begin,
+                    std::size_t end, std::vector<Varyings<Real>>& varyings) {
+    constexpr std::size_t kLanes = 256;
+    Real x[kLanes], y[kLanes], z[kLanes];
+    for (std::size_t first = begin; first < end; first += kLanes) {
+        const std::size_t n = std::min(kLanes, end - first);
+        for (std::size_t k = 0; k < n; ++k) {
+            const Vec3<Real> normal(frame.camera_from_world_direction(glm::dvec3(normals[first + k])));
+            x[k] = normal.x;
+            y[k] = normal.y;
+            z[k] = normal.z;
+        }
+        safe_normalize_lanes(n, x, y, z);
+        for (std::size_t k = 0; k < n; ++k) varyings[first + k].normal = Vec3<Real>(x[k], y[k], z[k]);
+    }
+}
 
 }  // namespace
 
@@ -56,11 +78,13 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
             }
             Varyings<Real>& v = out.varyings[i];
             v.position = Vec3<Real>(camera);
-            v.normal = need_normals ? safe_normalize<Real>(Vec3<Real>(
-                                          frame.camera_from_world_direction(glm::dvec3(normals[i]))))
-                                    : Vec3<Real>(Real(0));
             v.color = mesh.colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(mesh.colors[i]);
             v.lit = Vec3<Real>(Real(0));
+        }
+        if (need_normals) {
+            camera_normals(frame, normals, range.begin(), range.end(), out.varyings);
+        } else {
+            for (std::size_t i = range.begin(); i != range.end(); ++i) out.varyings[i].normal = Vec3<Real>(Real(0));
         }
         progress.piece_done();
     });
