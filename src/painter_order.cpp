@@ -35,13 +35,13 @@ struct Digit {
 };
 
 /// Sorts n records, in mesh order, whose keys agree with `base` above bit
-/// `shift`, stably by key: a few by insertion, more by a radix pass on the
+/// `shift`, stably by key: up to 64 by insertion, more by a radix pass on the
 /// next 8 bits (256 counters: cheap for the few hundred records of a typical
 /// bucket) through `scratch` (room for n records), then each part the same
 /// way. Stability keeps ties in mesh order.
 void sort_bucket(PaintRecord* data, PaintRecord* scratch, std::size_t n, std::uint64_t base, int shift) {
     if (shift == 0) return;  // all keys equal: mesh order is the order
-    if (n <= 32) {
+    if (n <= 64) {
         for (std::size_t i = 1; i < n; ++i) {
             const PaintRecord record = data[i];
             std::size_t j = i;
@@ -63,7 +63,8 @@ void sort_bucket(PaintRecord* data, PaintRecord* scratch, std::size_t n, std::ui
     for (std::size_t i = 0; i < n; ++i) scratch[cursor[digit(data[i].key)]++] = data[i];
     std::copy(scratch, scratch + n, data);
     for (std::size_t d = 0; d < 256; ++d) {
-        sort_bucket(data + start[d], scratch + start[d], start[d + 1] - start[d], base, low);
+        const std::size_t size = start[d + 1] - start[d];
+        if (size > 1) sort_bucket(data + start[d], scratch + start[d], size, base, low);
     }
 }
 
