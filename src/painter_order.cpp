@@ -12,6 +12,8 @@ using painter_sort::Counts;
 using painter_sort::kBuckets;
 using painter_sort::kDigitBits;
 
+/// Neighbouring buckets sorted by one task, with one scratch area.
+constexpr std::size_t kTaskBuckets = 32;
 /// Set-up chunks per group: a group (65,536 triangles) counts and scatters its records as one task.
 constexpr std::size_t kGroupChunks = 16;
 
@@ -149,11 +151,26 @@ void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
         progress.piece_done();
     });
 
-    memory.scratch.resize(total);
-    tbb::parallel_for(std::size_t(0), kBuckets, [&](std::size_t b) {
+    // The buckets are sorted in tasks of kTaskBuckets neighbours, each with
+    // scratch for its largest bucket: a small fraction of the records.
+    constexpr std::size_t kTasks = kBuckets / kTaskBuckets;
+    std::size_t room = 0;
+    for (std::size_t task = 0; task < kTasks; ++task) {
+        memory.task_scratch_start[task] = room;
+        std::size_t largest = 0;
+        for (std::size_t b = task * kTaskBuckets; b < (task + 1) * kTaskBuckets; ++b) {
+            largest = std::max(largest, bucket_start[b + 1] - bucket_start[b]);
+        }
+        room += largest;
+    }
+    memory.scratch.resize(std::max(memory.scratch.size(), room));
+    tbb::parallel_for(std::size_t(0), kTasks, [&](std::size_t task) {
         if (progress.cancelled()) return;
-        sort_bucket(memory.sorted.data() + bucket_start[b], memory.scratch.data() + bucket_start[b],
-                    bucket_start[b + 1] - bucket_start[b], base, shift - digit.bits);
+        PaintRecord* scratch = memory.scratch.data() + memory.task_scratch_start[task];
+        for (std::size_t b = task * kTaskBuckets; b < (task + 1) * kTaskBuckets; ++b) {
+            sort_bucket(memory.sorted.data() + bucket_start[b], scratch, bucket_start[b + 1] - bucket_start[b], base,
+                        shift - digit.bits);
+        }
     });
     for (std::size_t group = 0; group < groups; ++group) progress.piece_done();
     progress.throw_if_cancelled();

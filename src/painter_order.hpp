@@ -58,7 +58,8 @@ using Counts = std::array<std::uint32_t, kBuckets>;
 /// painter_order()'s output and scratch, kept from frame to frame.
 struct PainterOrderMemory {
     std::vector<PaintRecord> sorted;   ///< the drawn triangles in painter's order
-    std::vector<PaintRecord> scratch;  ///< room for the buckets too large to sort in cache
+    std::vector<PaintRecord> scratch;  ///< room to sort buckets: each task's largest bucket
+    std::array<std::size_t, painter_sort::kBuckets> task_scratch_start{};  ///< per task of buckets: its scratch
     std::vector<painter_sort::Counts> group_counts;  ///< per group of set-up chunks: its records per bucket
     std::vector<std::uint64_t> group_min, group_max;  ///< per group: its smallest and largest key
     std::vector<std::size_t> chunk_offsets;           ///< mesh order without sorting: where each chunk starts
