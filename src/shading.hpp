@@ -111,6 +111,13 @@ struct PointShader {
             return shade_general(*rig, vectors, normal, color);
         }
         if (effects.normals) vectors.compute(rig->active_lights, vector_origin, effects.specular);
+        return shade_with(vectors, normal, color);
+    }
+
+    /// The specialised path with `vectors` already computed for the active
+    /// lights (and the eye when specular is on).
+    Vec3<Real> shade_with(const LightVectorsAt<Real>& vectors, const Vec3<Real>& normal,
+                          const Vec3<Real>& color) const {
         const int key = (effects.ambient ? 4 : 0) | (effects.diffuse ? 2 : 0) | (effects.specular ? 1 : 0);
         switch (key) {
             case 0: return shade_terms<Real, false, false, false>(*rig, vectors, normal, color);

@@ -107,17 +107,70 @@ void build_light_rig(const Scene& scene, const CameraFrame& frame, LightRig<Real
     }
 }
 
+namespace {
+
+/// Vertices whose light vectors are normalised together.
+constexpr std::size_t kLightingLanes = 64;
+/// Active lights up to which the vectors are normalised lane by lane (their
+/// scratch lives on the stack); more go vertex by vertex.
+constexpr std::size_t kMaxLaneLights = 8;
+
+/// Specialised lighting of vertices [begin, end): the vectors to every
+/// active light and to the eye, for kLightingLanes vertices at a time, are
+/// normalised by safe_normalize_lanes() (vectorised), then each vertex is
+/// shaded from them: what PointShader computes vertex by vertex, bit for bit.
+template <typename Real>
+void light_vertex_lanes(const PointShader<Real>& shader, std::vector<Varyings<Real>>& varyings, std::size_t begin,
+                        std::size_t end, LightVectorsAt<Real>& vectors) {
+    const std::vector<CameraLight<Real>>& lights = shader.rig->active_lights;
+    const std::size_t count = lights.size() + 1;  // the lights, then the eye
+    Real lanes[(kMaxLaneLights + 1) * 3 * kLightingLanes];
+    vectors.to_light.resize(lights.size());
+    const auto lane = [&](std::size_t vector, int axis) { return lanes + (vector * 3 + axis) * kLightingLanes; };
+    for (std::size_t first = begin; first < end; first += kLightingLanes) {
+        const std::size_t n = std::min(kLightingLanes, end - first);
+        for (std::size_t k = 0; k < count; ++k) {
+            Real* x = lane(k, 0);
+            Real* y = lane(k, 1);
+            Real* z = lane(k, 2);
+            for (std::size_t i = 0; i < n; ++i) {
+                const Vec3<Real>& point = varyings[first + i].position;
+                // LightVectorsAt::compute()'s differences: light - point, and -point for the eye at the origin.
+                const Vec3<Real> d = k < lights.size() ? lights[k].position - point : -point;
+                x[i] = d.x;
+                y[i] = d.y;
+                z[i] = d.z;
+            }
+            safe_normalize_lanes(n, x, y, z);
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t k = 0; k < lights.size(); ++k) vectors.to_light[k] = {lane(k, 0)[i], lane(k, 1)[i], lane(k, 2)[i]};
+            if (shader.effects.specular) vectors.to_eye = {lane(lights.size(), 0)[i], lane(lights.size(), 1)[i], lane(lights.size(), 2)[i]};
+            Varyings<Real>& v = varyings[first + i];
+            v.lit = shader.shade_with(vectors, v.normal, v.color);
+        }
+    }
+}
+
+}  // namespace
+
 template <typename Real>
 void light_vertices(const PointShader<Real>& shader, std::vector<Varyings<Real>>& varyings,
                     VertexStageMemory<Real>& memory) {
     const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
     if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
+    const bool lanes = shader.specialized && shader.effects.normals && shader.rig->active_lights.size() <= kMaxLaneLights;
     // Scratch per block, not per thread: which worker runs which block changes
     // from frame to frame, and per-thread scratch would then allocate.
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
         LightVectorsAt<Real>& vectors = memory.block_vectors[block];
+        const std::size_t begin = block * kLightingBlock;
         const std::size_t end = std::min(varyings.size(), (block + 1) * kLightingBlock);
-        for (std::size_t i = block * kLightingBlock; i != end; ++i) {
+        if (lanes) {
+            light_vertex_lanes(shader, varyings, begin, end, vectors);
+            return;
+        }
+        for (std::size_t i = begin; i != end; ++i) {
             Varyings<Real>& v = varyings[i];
             v.lit = shader(vectors, v.position, v.normal, v.color);
         }

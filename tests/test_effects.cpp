@@ -58,6 +58,19 @@ TEST_CASE("specialised kernels give the general kernel's image bit for bit") {
     CHECK(compared == 3 * 6 * 4 * 2);
 }
 
+TEST_CASE("Gouraud lights its vertices alike with few and with many lights") {
+    // Up to 8 active lights the vertex stage normalises light vectors many
+    // vertices at a time; beyond, vertex by vertex: both give the general kernel's image.
+    Scene scene = sphere_scene();
+    scene.shader = Shader::gouraud;
+    for (int extra = 0; extra < 9; ++extra) {
+        scene.lights.push_back({{-3.0 + extra, 2.5, 3.0 - 0.5 * extra}, {0.05f * extra, 0.1f, 0.08f}});
+        INFO(scene.lights.size() << " lights");
+        CHECK(render_with(scene, RenderOptions::exact(), true).image.pixels ==
+              render_with(scene, RenderOptions::exact(), false).image.pixels);
+    }
+}
+
 TEST_CASE("no specular evaluations when nothing is shiny or specular is not selected") {
     Scene scene = sphere_scene();
     for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
