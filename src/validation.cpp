@@ -1,7 +1,11 @@
 #include "validation.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include "finite.hpp"
 #include "raster.hpp"
@@ -78,32 +82,56 @@ void validate_render_request(const Scene& scene, const RenderOptions& options) {
 
 }  // namespace detail
 
+namespace {
+
+/// The smallest i in [0, n) for which bad(i) holds, or n: the same answer as
+/// a loop from 0, found in parallel over blocks (large meshes are checked
+/// on every render).
+template <typename Bad>
+std::size_t first_bad(std::size_t n, const Bad& bad) {
+    constexpr std::size_t kBlock = 65536;
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, kBlock), n,
+        [&](const tbb::blocked_range<std::size_t>& range, std::size_t found) {
+            for (std::size_t i = range.begin(); i < range.end() && i < found; ++i) {
+                if (bad(i)) return i;
+            }
+            return found;
+        },
+        [](std::size_t a, std::size_t b) { return std::min(a, b); });
+}
+
+}  // namespace
+
 void validate_mesh(const Mesh& mesh) {
     const std::string vertices = std::to_string(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        if (!detail::all_finite(mesh.positions[i])) {
-            throw std::invalid_argument("mesh: position of vertex " + std::to_string(i) + " is not finite");
-        }
+    const std::size_t bad_position =
+        first_bad(mesh.positions.size(), [&](std::size_t i) { return !detail::all_finite(mesh.positions[i]); });
+    if (bad_position < mesh.positions.size()) {
+        throw std::invalid_argument("mesh: position of vertex " + std::to_string(bad_position) + " is not finite");
     }
     if (!mesh.colors.empty() && mesh.colors.size() != mesh.positions.size()) {
         throw std::invalid_argument("mesh: " + std::to_string(mesh.colors.size()) + " colours for " + vertices +
                                     " vertices (expected one per vertex, or none)");
     }
-    for (std::size_t i = 0; i < mesh.colors.size(); ++i) {
-        if (!detail::all_finite(mesh.colors[i])) {
-            throw std::invalid_argument("mesh: colour of vertex " + std::to_string(i) + " is not finite");
-        }
+    const std::size_t bad_color =
+        first_bad(mesh.colors.size(), [&](std::size_t i) { return !detail::all_finite(mesh.colors[i]); });
+    if (bad_color < mesh.colors.size()) {
+        throw std::invalid_argument("mesh: colour of vertex " + std::to_string(bad_color) + " is not finite");
     }
     if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) {
         throw std::invalid_argument("mesh: " + std::to_string(mesh.normals.size()) + " normals for " + vertices +
                                     " vertices (expected one per vertex, or none)");
     }
-    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-        for (std::uint32_t index : mesh.triangles[i]) {
-            if (index >= mesh.positions.size()) {
-                throw std::invalid_argument("mesh: triangle " + std::to_string(i) + " has vertex index " +
-                                            std::to_string(index) + ", expected below " + vertices);
-            }
+    const std::size_t bad_triangle = first_bad(mesh.triangles.size(), [&](std::size_t i) {
+        const Triangle& triangle = mesh.triangles[i];
+        return std::max({triangle[0], triangle[1], triangle[2]}) >= mesh.positions.size();
+    });
+    if (bad_triangle == mesh.triangles.size()) return;
+    for (std::uint32_t index : mesh.triangles[bad_triangle]) {
+        if (index >= mesh.positions.size()) {
+            throw std::invalid_argument("mesh: triangle " + std::to_string(bad_triangle) + " has vertex index " +
+                                        std::to_string(index) + ", expected below " + vertices);
         }
     }
 }

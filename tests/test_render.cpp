@@ -1,5 +1,6 @@
 // render(): painter's order, shaders, presets, and the seed's eight figures.
 #include <cmath>
+#include <limits>
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -271,6 +272,21 @@ TEST_CASE("invalid scenes are rejected with the field named") {
     SECTION("index out of range") {
         scene.mesh.triangles.push_back({0, 1, 7});
         CHECK_THROWS_WITH(render(scene), Catch::Contains("vertex index 7"));
+    }
+    SECTION("large meshes are checked in parallel, and the first bad element is named") {
+        const glm::dvec3 p = world_at(50, 50);
+        scene.mesh.positions.assign(300000, p);
+        scene.mesh.colors.assign(300000, {1, 1, 1});
+        scene.mesh.triangles.assign(300000, {0, 1, 2});
+        scene.mesh.triangles[200001] = {0, 300001, 1};
+        scene.mesh.triangles[100001] = {0, 1, 300000};
+        CHECK_THROWS_WITH(render(scene), Catch::Contains("triangle 100001 has vertex index 300000"));
+        scene.mesh.colors[250000].g = std::numeric_limits<float>::infinity();
+        scene.mesh.colors[70000].r = std::numeric_limits<float>::quiet_NaN();
+        CHECK_THROWS_WITH(render(scene), Catch::Contains("colour of vertex 70000 is not finite"));
+        scene.mesh.positions[299999].x = std::numeric_limits<double>::infinity();
+        scene.mesh.positions[131072].z = std::numeric_limits<double>::quiet_NaN();
+        CHECK_THROWS_WITH(render(scene), Catch::Contains("position of vertex 131072 is not finite"));
     }
     SECTION("negative exponent") {
         scene.material.n = -1;
