@@ -118,12 +118,16 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
                ProgressMonitor& progress) {
     image.rows = rows;
     image.columns = columns;
-    image.pixels.assign(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns), scene.image.background);
+    // Cleared band by band, in parallel, below: resizing writes only what a larger image adds.
+    image.pixels.resize(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns));
     prepare_memory(plan, bins.bands, image.pixels.size(), memory);
     tbb::parallel_for(0, bins.bands, [&](int band) {
         if (progress.cancelled()) return;
         FillTarget<Real> target{image, memory.depth_buffer, band * kBandRows, std::min(rows, (band + 1) * kBandRows),
                                 plan.depth_test, 0, 0};
+        const std::size_t band_start = static_cast<std::size_t>(target.row_begin) * static_cast<std::size_t>(columns);
+        const std::size_t band_end = static_cast<std::size_t>(target.row_end) * static_cast<std::size_t>(columns);
+        std::fill(image.pixels.begin() + band_start, image.pixels.begin() + band_end, scene.image.background);
         LightVectorsAt<Real>& vectors = memory.band_vectors[band];
         memory.covered[band] =
             plan.shade_visible_only
