@@ -106,12 +106,24 @@ struct PointShader {
 
     Vec3<Real> operator()(LightVectorsAt<Real>& vectors, const Vec3<Real>& vector_origin,
                           const Vec3<Real>& normal, const Vec3<Real>& color) const {
+        compute_vectors(vectors, vector_origin);
+        return shade_prepared(vectors, normal, color);
+    }
+
+    /// The vectors operator() computes at `vector_origin`: computed once,
+    /// they light several points there (a triangle's corners lit at its centroid).
+    void compute_vectors(LightVectorsAt<Real>& vectors, const Vec3<Real>& vector_origin) const {
         if (!specialized) {
             vectors.compute(rig->lights, vector_origin, true);
-            return shade_general(*rig, vectors, normal, color);
+        } else if (effects.normals) {
+            vectors.compute(rig->active_lights, vector_origin, effects.specular);
         }
-        if (effects.normals) vectors.compute(rig->active_lights, vector_origin, effects.specular);
-        return shade_with(vectors, normal, color);
+    }
+
+    /// operator() with the vectors compute_vectors() computed.
+    Vec3<Real> shade_prepared(const LightVectorsAt<Real>& vectors, const Vec3<Real>& normal,
+                              const Vec3<Real>& color) const {
+        return specialized ? shade_with(vectors, normal, color) : shade_general(*rig, vectors, normal, color);
     }
 
     /// The specialised path with `vectors` already computed for the active

@@ -216,9 +216,10 @@ private:
     // came from light_vertices()).
     std::uint64_t light_corners(Varyings<Real>* const corners[3], const Vec3<Real>& centroid) const {
         if (in_.options.light_vectors != LightVectors::triangle_centroid) return 0;
+        in_.shader.compute_vectors(vectors_, centroid);  // the same vectors for all three corners
         for (int i = 0; i < 3; ++i) {
             Varyings<Real>& v = *corners[i];
-            v.lit = in_.shader(vectors_, centroid, v.normal, v.color);
+            v.lit = in_.shader.shade_prepared(vectors_, v.normal, v.color);
         }
         return 3;
     }
