@@ -15,12 +15,13 @@ constexpr std::size_t kBinningBlock = 16384;
 /// alone; only clipped ones read their draws' rows.
 template <typename Real, typename Visit>
 void for_each_band(const DrawList<Real>& draws, const DrawnTriangle& drawn, Visit&& visit) {
-    const DrawTriangle<Real>* first = draws.chunk_draws[drawn.chunk].data() + drawn.first;
-    if (drawn.count == 1) {
-        for (std::size_t band = drawn.band_first; band <= drawn.band_last; ++band) visit(band, first);
+    const DrawTriangle<Real>* first = draws.chunk_draws[drawn.chunk()].data() + drawn.first();
+    if (drawn.single()) {
+        const std::size_t band_last = static_cast<std::size_t>(drawn.band_last());
+        for (std::size_t band = static_cast<std::size_t>(drawn.band_first()); band <= band_last; ++band) visit(band, first);
         return;
     }
-    for (const DrawTriangle<Real>* draw = first; draw != first + drawn.count; ++draw) {
+    for (const DrawTriangle<Real>* draw = first; draw != first + drawn.count(); ++draw) {
         const std::size_t band_last = static_cast<std::size_t>(draw->coverage.row_max / kBandRows);
         for (std::size_t band = static_cast<std::size_t>(draw->coverage.row_min / kBandRows); band <= band_last; ++band) {
             visit(band, draw);

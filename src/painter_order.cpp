@@ -182,8 +182,7 @@ std::vector<std::uint32_t> farthest_first_order(const std::vector<double>& depth
     std::vector<std::vector<DrawnTriangle>> chunk_drawn(chunks);
     std::vector<std::vector<std::uint64_t>> chunk_keys(chunks);
     for (std::size_t i = 0; i < depth.size(); ++i) {
-        chunk_drawn[i / kChunk].push_back(
-            {static_cast<std::uint32_t>(i / kChunk), static_cast<std::uint32_t>(i % kChunk), 1, 0, 0});
+        chunk_drawn[i / kChunk].push_back(DrawnTriangle::one(i / kChunk, i % kChunk, 0, 0));
         chunk_keys[i / kChunk].push_back(farthest_first_key(depth[i]));
     }
     PainterOrderMemory memory;
@@ -191,7 +190,7 @@ std::vector<std::uint32_t> farthest_first_order(const std::vector<double>& depth
     painter_order(chunk_drawn, chunk_keys, chunks, true, memory, progress);
     std::vector<std::uint32_t> order;
     for (const PaintRecord& record : memory.sorted) {
-        order.push_back(static_cast<std::uint32_t>(record.drawn.chunk * kChunk + record.drawn.first));
+        order.push_back(static_cast<std::uint32_t>(record.drawn.chunk() * kChunk + record.drawn.first()));
     }
     return order;
 }

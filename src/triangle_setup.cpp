@@ -13,8 +13,9 @@
 namespace phongrast::detail {
 namespace {
 
-/// Triangles set up by one task.
-constexpr std::size_t kSetupChunk = 4096;
+// A clipped triangle is a fan of at most 6 pieces (ClipPolygon holds 8 corners).
+static_assert(kSetupChunk * 6 < (std::size_t(1) << DrawnTriangle::kFirstBits), "a chunk's draws must fit DrawnTriangle");
+static_assert(std::tuple_size<decltype(ClipPolygon<float>::vertices)>::value == 8, "at most 6 pieces per triangle");
 
 /// One corner of a piece to draw: where it is (sample coordinates, z_c) and
 /// the varyings the draw triangle will point to.
@@ -235,16 +236,13 @@ private:
 
 /// Records where the draws of the triangle just set up are, and its painter's-order key.
 template <typename Real>
-void record_drawn(const std::vector<DrawTriangle<Real>>& out, std::size_t first, std::uint32_t chunk,
+void record_drawn(const std::vector<DrawTriangle<Real>>& out, std::size_t first, std::size_t chunk,
                   std::uint64_t key, std::vector<DrawnTriangle>& drawn, std::vector<std::uint64_t>& keys) {
-    int row_min = out[first].coverage.row_min, row_max = out[first].coverage.row_max;
-    for (std::size_t d = first + 1; d < out.size(); ++d) {
-        row_min = std::min(row_min, out[d].coverage.row_min);
-        row_max = std::max(row_max, out[d].coverage.row_max);
-    }
+    const std::size_t count = out.size() - first;
     // Bands fit 16 bits: images are at most kMaxImageSide = 2^19 samples high.
-    drawn.push_back({chunk, static_cast<std::uint32_t>(first), static_cast<std::uint16_t>(out.size() - first),
-                     static_cast<std::uint16_t>(row_min / kBandRows), static_cast<std::uint16_t>(row_max / kBandRows)});
+    drawn.push_back(count == 1 ? DrawnTriangle::one(chunk, first, out[first].coverage.row_min / kBandRows,
+                                                    out[first].coverage.row_max / kBandRows)
+                               : DrawnTriangle::several(chunk, first, static_cast<int>(count)));
     keys.push_back(key);
 }
 
@@ -300,8 +298,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
             const std::size_t first = out.size();
             setup.run(static_cast<std::uint32_t>(t));
             if (out.size() == first) continue;
-            record_drawn(out, first, static_cast<std::uint32_t>(chunk), painter_key(triangles[t], camera_depth), drawn,
-                         keys);
+            record_drawn(out, first, chunk, painter_key(triangles[t], camera_depth), drawn, keys);
         }
         progress.piece_done();
     });

@@ -44,14 +44,46 @@ struct SetupCounts {
     std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during set-up
 };
 
+/// Mesh triangles set up by one task (one chunk of the draw list).
+constexpr std::size_t kSetupChunk = 4096;
+
 /// A mesh triangle that set-up turned into draws, as painter's order and
-/// binning see it: 16 bytes, so that sorting and binning do not read the
-/// draws themselves.
-struct DrawnTriangle {
-    std::uint32_t chunk;  ///< the set-up chunk whose draw list holds its draws
-    std::uint32_t first;  ///< its first draw there; its draws follow one another
-    std::uint16_t count;  ///< its draws: one, or one per piece of its clipped polygon
-    std::uint16_t band_first, band_last;  ///< bands of kBandRows rows its draws touch
+/// binning see it: 8 bytes, so that the sort moves little and binning does
+/// not read the draws themselves.
+class DrawnTriangle {
+public:
+    /// Bits of the place of a draw in its chunk's list (kSetupChunk triangles
+    /// of at most 6 pieces each fit); the chunk takes the other 17, so a mesh
+    /// has at most 2^29 triangles (validate_mesh() checks).
+    static constexpr int kFirstBits = 15;
+    static constexpr std::size_t kMaxTriangles = (std::size_t(1) << (32 - kFirstBits)) * kSetupChunk;
+
+    DrawnTriangle() = default;
+    /// One draw, touching bands [band_first, band_last] of kBandRows rows.
+    static DrawnTriangle one(std::size_t chunk, std::size_t first, int band_first, int band_last) {
+        return {chunk, first, static_cast<std::uint16_t>(band_first), static_cast<std::uint16_t>(band_last)};
+    }
+    /// `count` draws in a row (a clipped polygon's pieces): binning reads their rows.
+    static DrawnTriangle several(std::size_t chunk, std::size_t first, int count) {
+        return {chunk, first, static_cast<std::uint16_t>(count), kSeveral};
+    }
+
+    std::size_t chunk() const { return draw_ >> kFirstBits; }
+    std::size_t first() const { return draw_ & ((std::uint32_t(1) << kFirstBits) - 1); }
+    bool single() const { return band_last_ != kSeveral; }
+    int count() const { return single() ? 1 : band_first_; }
+    int band_first() const { return band_first_; }  ///< single() only
+    int band_last() const { return band_last_; }    ///< single() only
+
+private:
+    /// Not a band: images are at most 2^19 rows, 2^15 bands.
+    static constexpr std::uint16_t kSeveral = 0xffff;
+
+    DrawnTriangle(std::size_t chunk, std::size_t first, std::uint16_t a, std::uint16_t b)
+        : draw_(static_cast<std::uint32_t>(chunk << kFirstBits | first)), band_first_(a), band_last_(b) {}
+
+    std::uint32_t draw_ = 0;  ///< chunk << kFirstBits | place of its first draw there
+    std::uint16_t band_first_ = 0, band_last_ = 0;  ///< bands; or, when several, the count and kSeveral
 };
 
 /// Set-up's output, in mesh order: chunk after chunk of kSetupChunk mesh

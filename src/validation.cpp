@@ -9,6 +9,7 @@
 
 #include "finite.hpp"
 #include "raster.hpp"
+#include "triangle_setup.hpp"
 #include "phongrast/mesh.hpp"
 
 namespace phongrast {
@@ -122,6 +123,10 @@ void validate_mesh(const Mesh& mesh) {
     if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) {
         throw std::invalid_argument("mesh: " + std::to_string(mesh.normals.size()) + " normals for " + vertices +
                                     " vertices (expected one per vertex, or none)");
+    }
+    if (mesh.triangles.size() > detail::DrawnTriangle::kMaxTriangles) {
+        throw std::invalid_argument("mesh: " + std::to_string(mesh.triangles.size()) + " triangles, expected at most " +
+                                    std::to_string(detail::DrawnTriangle::kMaxTriangles));
     }
     const std::size_t bad_triangle = first_bad(mesh.triangles.size(), [&](std::size_t i) {
         const Triangle& triangle = mesh.triangles[i];

@@ -20,9 +20,8 @@ pd::DrawTriangle<float> draw_over_rows(int row_min, int row_max) {
 }  // namespace
 
 /// A drawn triangle of one draw, as set-up records it.
-pd::DrawnTriangle one_draw(std::uint32_t chunk, std::uint32_t first, int row_min, int row_max) {
-    return {chunk, first, 1, static_cast<std::uint16_t>(row_min / pd::kBandRows),
-            static_cast<std::uint16_t>(row_max / pd::kBandRows)};
+pd::DrawnTriangle one_draw(std::size_t chunk, std::size_t first, int row_min, int row_max) {
+    return pd::DrawnTriangle::one(chunk, first, row_min / pd::kBandRows, row_max / pd::kBandRows);
 }
 
 TEST_CASE("bins follow painter's order within each band, whatever chunk a draw came from") {
@@ -39,7 +38,7 @@ TEST_CASE("bins follow painter's order within each band, whatever chunk a draw c
 
     pd::PainterOrderMemory painter;
     // Painter's order: b's clipped triangle first, then a1, b0, a0, a2.
-    painter.sorted = {{0, {1, 1, 2, 0, 2}}, {1, one_draw(0, 1, 10, 20)}, {2, one_draw(1, 0, 15, 16)},
+    painter.sorted = {{0, pd::DrawnTriangle::several(1, 1, 2)}, {1, one_draw(0, 1, 10, 20)}, {2, one_draw(1, 0, 15, 16)},
                       {3, one_draw(0, 0, 0, 3)}, {4, one_draw(0, 2, 33, 39)}};
 
     pd::BinningMemory memory;
