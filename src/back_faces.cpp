@@ -9,9 +9,9 @@ namespace {
 template <typename Real>
 bool front_faces_may_be_cut(const RenderOptions& options, const View& view,
                             const TransformedVertices<Real>& vertices) {
-    for (std::size_t i = 0; i < vertices.camera_depth.size(); ++i) {
+    for (std::size_t i = 0; i < vertices.screen.size(); ++i) {
         if (options.border == BorderPolicy::drop_triangle ? !vertices.inside_image(static_cast<std::uint32_t>(i), view)
-                                                          : vertices.camera_depth[i] < view.near_depth) {
+                                                          : vertices.screen[i].depth < view.near_depth) {
             return true;
         }
     }

@@ -22,6 +22,7 @@
 #include "phongrast/mesh.hpp"
 #include "progress_monitor.hpp"
 #include "triangle_setup.hpp"
+#include "vertex_stage.hpp"
 
 namespace phongrast::detail {
 
@@ -38,9 +39,8 @@ inline std::uint64_t farthest_first_key(double depth) {
 
 /// The contract's sort key of a triangle: the mean z_c (camera space) of its
 /// three vertices, as a key whose ascending order is farthest first.
-inline std::uint64_t painter_key(const Triangle& triangle, const std::vector<double>& camera_depth) {
-    return farthest_first_key((camera_depth[triangle[0]] + camera_depth[triangle[1]] + camera_depth[triangle[2]]) /
-                              3.0);
+inline std::uint64_t painter_key(const Triangle& triangle, const std::vector<ScreenVertex>& screen) {
+    return farthest_first_key((screen[triangle[0]].depth + screen[triangle[1]].depth + screen[triangle[2]].depth) / 3.0);
 }
 
 /// A drawn triangle and its key: what the sort moves.

@@ -58,8 +58,9 @@ public:
         const Vec3<Real> centroid = centroid_if_lit_there(tri);
         const std::size_t first_draw = out_.size();
         const double near_depth = in_.view.near_depth;
-        const bool whole = inside_image && vertices_.camera_depth[tri[0]] >= near_depth &&
-                           vertices_.camera_depth[tri[1]] >= near_depth && vertices_.camera_depth[tri[2]] >= near_depth;
+        const std::vector<ScreenVertex>& screen = vertices_.screen;
+        const bool whole = inside_image && screen[tri[0]].depth >= near_depth && screen[tri[1]].depth >= near_depth &&
+                           screen[tri[2]].depth >= near_depth;
         PiecesOutcome outcome;
         if (whole) {
             outcome = set_up_whole(tri, centroid);
@@ -116,10 +117,13 @@ private:
         order[0] = 0;
         order[1] = draw.coverage.swapped ? 2 : 1;
         order[2] = draw.coverage.swapped ? 1 : 2;
+        // Only Gouraud reads the corners' lit colours (flat writes its own
+        // below): Phong's set-up leaves the vertex's varyings unread.
+        const bool gouraud = in_.scene.shader == Shader::gouraud;
         for (int i = 0; i < 3; ++i) {
             const Corner<Real>& from = corner[order[i]];
             draw.v[i] = from.varyings;
-            draw.lit[i] = from.varyings->lit;
+            draw.lit[i] = gouraud ? from.varyings->lit : Vec3<Real>(Real(0));
             draw.depth[i] = static_cast<Real>(from.depth);
         }
         draw.centroid = centroid;
@@ -132,8 +136,8 @@ private:
     PiecesOutcome set_up_whole(const Triangle& tri, const Vec3<Real>& centroid) {
         Corner<Real> corner[3];
         for (int i = 0; i < 3; ++i) {
-            corner[i] = {vertices_.column[tri[i]], vertices_.row[tri[i]], vertices_.camera_depth[tri[i]],
-                         &vertices_.varyings[tri[i]]};
+            const ScreenVertex& s = vertices_.screen[tri[i]];
+            corner[i] = {s.column, s.row, s.depth, &vertices_.varyings[tri[i]]};
         }
         PiecesOutcome outcome;
         DrawTriangle<Real> draw;
@@ -159,9 +163,10 @@ private:
         for (int i = 0; i < 3; ++i) {
             ClipVertex<Real>& v = polygon.vertices[i];
             v.varyings = vertices_.varyings[tri[i]];
-            v.depth = vertices_.camera_depth[tri[i]];
-            v.column = vertices_.column[tri[i]];
-            v.row = vertices_.row[tri[i]];
+            const ScreenVertex& s = vertices_.screen[tri[i]];
+            v.depth = s.depth;
+            v.column = s.column;
+            v.row = s.row;
         }
         if (in_.scene.shader == Shader::gouraud) {
             // Before clipping, so that clipped corners interpolate lit colours.
@@ -276,7 +281,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
     if (draws.chunk_vectors.size() < chunks) draws.chunk_vectors.resize(chunks);
     draws.chunk_counts.assign(chunks, SetupCounts{});
     draws.chunks = chunks;
-    const std::vector<double>& camera_depth = input.vertices.camera_depth;
+    const std::vector<ScreenVertex>& screen = input.vertices.screen;
     progress.begin_stage(0.1, 0.35, chunks);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
         if (progress.cancelled()) return;
@@ -298,7 +303,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
             const std::size_t first = out.size();
             setup.run(static_cast<std::uint32_t>(t));
             if (out.size() == first) continue;
-            record_drawn(out, first, chunk, painter_key(triangles[t], camera_depth), drawn, keys);
+            record_drawn(out, first, chunk, painter_key(triangles[t], screen), drawn, keys);
         }
         progress.piece_done();
     });

@@ -57,9 +57,7 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
                                progress.poll_function());
     }
     const std::vector<glm::vec3>& normals = mesh.normals.empty() ? memory.normals : mesh.normals;
-    out.camera_depth.resize(count);
-    out.column.resize(count);
-    out.row.resize(count);
+    out.screen.resize(count);
     out.varyings.resize(count);
     const CameraFrame& frame = view.frame;
     progress.begin_stage(0.05, 0.1, (count + kTransformBlock - 1) / kTransformBlock);
@@ -68,13 +66,14 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
         if (progress.cancelled()) return;
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
             const glm::dvec3 camera = frame.camera_from_world(mesh.positions[i]);
-            out.camera_depth[i] = camera.z;
+            ScreenVertex& screen = out.screen[i];
+            screen.depth = camera.z;
             if (camera.z > 0.0) {
                 const glm::dvec2 sample = view.sample_from_camera(camera);
-                out.column[i] = sample.x;
-                out.row[i] = sample.y;
+                screen.column = sample.x;
+                screen.row = sample.y;
             } else {
-                out.column[i] = out.row[i] = std::numeric_limits<double>::quiet_NaN();
+                screen.column = screen.row = std::numeric_limits<double>::quiet_NaN();
             }
             Varyings<Real>& v = out.varyings[i];
             v.position = Vec3<Real>(camera);

@@ -16,19 +16,26 @@
 
 namespace phongrast::detail {
 
+/// Where a vertex lands: what set-up, clipping and painter's order read of
+/// it, side by side, so that a triangle whose vertices lie far apart in the
+/// arrays costs one cache line per vertex, not three.
+struct ScreenVertex {
+    double column, row;  ///< sample coordinates; NaN for a vertex not in front of the eye
+    double depth;        ///< z_c (camera space), > 0 in front of the eye
+};
+
 /// The vertex stage's output, indexed like Mesh::positions.
 template <typename Real>
 struct TransformedVertices {
-    std::vector<double> camera_depth;     ///< z_c (camera space), > 0 in front of the eye
-    std::vector<double> column, row;      ///< sample coordinates; NaN for a vertex not in front of the eye
+    std::vector<ScreenVertex> screen;
     std::vector<Varyings<Real>> varyings; ///< camera-space position and normal, colour, lit colour
 
     /// The seed's border rule: in front of the eye and inside the image, judged
     /// at the unshifted vertex whatever the sample offset.
     bool inside_image(std::uint32_t vertex, const View& view) const {
-        const double c = column[vertex] + view.sample_offset.x, r = row[vertex] + view.sample_offset.y;
-        return camera_depth[vertex] > 0.0 && c >= 0.0 && c <= view.frame.columns && r >= 0.0 &&
-               r <= view.frame.rows;
+        const ScreenVertex& s = screen[vertex];
+        const double c = s.column + view.sample_offset.x, r = s.row + view.sample_offset.y;
+        return s.depth > 0.0 && c >= 0.0 && c <= view.frame.columns && r >= 0.0 && r <= view.frame.rows;
     }
 };
 
