@@ -1,4 +1,5 @@
 // Effect detection: the render simulates only what the scene calls for.
+#include <cstring>
 #include <string>
 
 #include "scene_analysis.hpp"
@@ -21,9 +22,12 @@ EffectSet find_effects(const Scene& scene) {
     effects.diffuse = scene.lighting.diffuse && non_zero(m.kd) && effects.active_lights > 0;
     effects.specular = scene.lighting.specular && non_zero(m.ks) && effects.active_lights > 0;
     effects.normals = effects.diffuse || effects.specular;
+    // Bit for bit, not by value: -0 and +0 are equal values, but a kernel
+    // that writes colors[0] for every vertex's colour would flip the sign of
+    // a zero channel, and images are compared bit for bit.
     const std::vector<glm::vec3>& colors = scene.mesh.colors;
     for (std::size_t i = 1; i < colors.size() && !effects.varying_colors; ++i) {
-        effects.varying_colors = colors[i] != colors[0];
+        effects.varying_colors = std::memcmp(&colors[i], &colors[0], sizeof(glm::vec3)) != 0;
     }
     return effects;
 }

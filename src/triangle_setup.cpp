@@ -1,6 +1,7 @@
 #include "triangle_setup.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include <tbb/parallel_for.h>
 
@@ -38,7 +39,7 @@ public:
     TriangleSetup(const SetupInput<Real>& input, std::vector<DrawTriangle<Real>>& out,
                   ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors)
         : in_(input), vertices_(input.vertices), out_(out), clip_vertices_(clip_vertices), counts_(counts),
-          vectors_(vectors) {}
+          vectors_(vectors), same_lit_(same_lit_everywhere()) {}
 
     // Both paths, whole and clipped, make their pieces with set_up_piece()
     // and are counted and flat-lit here.
@@ -71,7 +72,7 @@ public:
         if (outcome.drawn && in_.scene.shader == Shader::flat) {
             // Lit only once something is to be drawn: clipped-away and
             // degenerate triangles cost no lighting.
-            const Vec3<Real> lit = flat_color(tri, centroid);
+            const Vec3<Real> lit = same_lit_ ? *same_lit_ : flat_color(tri, centroid);
             ++counts_.lit_points;
             for (std::size_t d = first_draw; d < out_.size(); ++d) {
                 for (Vec3<Real>& corner_lit : out_[d].lit) corner_lit = lit;
@@ -85,7 +86,8 @@ private:
     /// seed's light vectors light at it; else zero, unread, and the vertex
     /// positions are not loaded at all.
     Vec3<Real> centroid_if_lit_there(const Triangle& tri) const {
-        if (in_.scene.shader != Shader::flat && in_.options.light_vectors != LightVectors::triangle_centroid) {
+        if ((in_.scene.shader != Shader::flat && in_.options.light_vectors != LightVectors::triangle_centroid) ||
+            same_lit_) {
             return Vec3<Real>(Real(0));
         }
         const std::vector<Varyings<Real>>& varyings = vertices_.varyings;
@@ -123,7 +125,7 @@ private:
         for (int i = 0; i < 3; ++i) {
             const Corner<Real>& from = corner[order[i]];
             draw.v[i] = from.varyings;
-            draw.lit[i] = gouraud ? from.varyings->lit : Vec3<Real>(Real(0));
+            draw.lit[i] = !gouraud ? Vec3<Real>(Real(0)) : same_lit_ ? *same_lit_ : from.varyings->lit;
             draw.depth[i] = static_cast<Real>(from.depth);
         }
         draw.centroid = centroid;
@@ -143,7 +145,10 @@ private:
         DrawTriangle<Real> draw;
         int order[3];
         if (!set_up_piece(corner, centroid, draw, outcome, order)) return outcome;
-        if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid) {
+        if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid &&
+            same_lit_) {
+            counts_.lit_points += 3;  // lit like the corners below, to the colour every point gets
+        } else if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid) {
             // Lit copies of the corners: light_corners() writes their `lit`, the mesh's vertices stay as they are.
             // (Exact vectors: set_up_piece() copied the `lit` light_vertices() gave each vertex.)
             Varyings<Real> copies[3] = {*draw.v[0], *draw.v[1], *draw.v[2]};
@@ -205,6 +210,16 @@ private:
         }
     }
 
+    /// The colour every point lights to, when that does not depend on the
+    /// point: one surface colour and no term that depends on where (only
+    /// ambient, or nothing), evaluated by the specialised shader, which then
+    /// computes exactly this at every vertex, corner and centroid. Flat and
+    /// Gouraud's corners then take it without reading any vertex.
+    std::optional<Vec3<Real>> same_lit_everywhere() const {
+        if (!in_.shader.specialized || in_.shader.effects.normals || !in_.fill.uniform_color) return std::nullopt;
+        return in_.shader.shade_prepared(vectors_, Vec3<Real>(Real(0)), in_.fill.color);
+    }
+
     // Flat: one colour per triangle, lit at the centroid with the mean vertex
     // normal (renormalised) and the mean vertex colour.
     Vec3<Real> flat_color(const Triangle& tri, const Vec3<Real>& centroid) const {
@@ -237,6 +252,7 @@ private:
     ClipVertexStore<Real>& clip_vertices_;
     SetupCounts& counts_;
     LightVectorsAt<Real>& vectors_;
+    const std::optional<Vec3<Real>> same_lit_;  ///< same_lit_everywhere()
 };
 
 /// Records where the draws of the triangle just set up are, and its painter's-order key.

@@ -149,6 +149,11 @@ TEST_CASE("the effect set records what the scene makes non-zero") {
 
     scene.mesh.colors.assign(scene.mesh.positions.size(), glm::vec3(0.2f, 0.4f, 0.6f));
     CHECK_FALSE(render(scene).stats.effects.varying_colors);
+    // -0 equals +0 as a value but not as bits: painting every vertex with the
+    // first one's colour would flip the sign of a zero channel.
+    scene.mesh.colors.assign(scene.mesh.positions.size(), glm::vec3(0.0f, 0.4f, 0.6f));
+    scene.mesh.colors[5].x = -0.0f;
+    CHECK(render(scene).stats.effects.varying_colors);
     scene.mesh.colors.clear();
     CHECK_FALSE(render(scene).stats.effects.varying_colors);
 
