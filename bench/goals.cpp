@@ -36,8 +36,16 @@ struct Settings {
     std::string scene = "icosphere-9.7k", mode = "exact";
     std::vector<int> threads = {1, 2};
     int rows = 0, repeat = 5;
-    bool header = false;
+    bool header = false, list = false;
+    support::SpeedSceneSelection selection;
 };
+
+/// --list: the selected speed scenes' names, one a line (bench/run.sh runs one process per scene).
+void list_scenes(const support::SpeedSceneSelection& selection) {
+    std::vector<std::string> notes;
+    for (const std::string& name : support::speed_scene_names(selection, notes)) std::printf("%s\n", name.c_str());
+    for (const std::string& note : notes) std::fprintf(stderr, "bench_goals: %s\n", note.c_str());
+}
 
 phongrast::RenderOptions options_for(const std::string& mode, int threads) {
     phongrast::RenderOptions options = mode == "seed" ? phongrast::RenderOptions::seed() : phongrast::RenderOptions::exact();
@@ -81,15 +89,17 @@ std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast
                                      {Shader::phong, Lighting::only_ambient()},
                                      {Shader::gouraud, Lighting::only_ambient()},
                                      {Shader::flat, Lighting::only_ambient()}};
-    // One Renderer, as an application that switches the lighting between frames
-    // would have: four would hold four sets of buffers (6 GB for the 8M mesh).
-    phongrast::Renderer renderer(options);
+    // A Renderer per case, each in the steady state of rendering its case frame
+    // after frame, nothing carried over from another case's frame. Four sets of
+    // buffers: about 6 GB for the 8M mesh.
+    std::vector<phongrast::Renderer> renderers;
+    for (std::size_t k = 0; k < cases.size(); ++k) renderers.emplace_back(options);
     std::vector<std::function<double()>> contenders;
-    for (const Case& c : cases) {
-        contenders.push_back([&] {
-            scene.shader = c.shader;  // outside the timed part, no copy of the mesh
-            scene.lighting = c.lighting;
-            return support::time_ms([&] { renderer.render(scene); });
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        contenders.push_back([&, k] {
+            scene.shader = cases[k].shader;  // outside the timed part, no copy of the mesh
+            scene.lighting = cases[k].lighting;
+            return support::time_ms([&] { renderers[k].render(scene); });
         });
     }
     return support::interleaved_medians(repeat, 1, contenders);
@@ -149,9 +159,19 @@ int main(int argc, char** argv) {
     app.add_option("--threads", s.threads, "thread counts, one row each")->check(CLI::Range(1, 256));
     app.add_option("--repeat", s.repeat, "timed rounds (median)")->check(CLI::Range(1, 1000));
     app.add_flag("--header", s.header, "print the table's title and header first");
+    bool no_assets = false, no_large = false, no_huge = false;
+    app.add_flag("--list", s.list, "print the names of the speed scenes (less those of --no-...) and stop");
+    app.add_flag("--no-assets", no_assets, "--list: without the meshes of ../shared/assets");
+    app.add_flag("--no-large", no_large, "--list: without icosphere-1.3M");
+    app.add_flag("--no-huge", no_huge, "--list: without icosphere-8M");
     CLI11_PARSE(app, argc, argv);
+    s.selection = {!no_assets, !no_large, !no_huge};
     try {
-        run(s);
+        if (s.list) {
+            list_scenes(s.selection);
+        } else {
+            run(s);
+        }
     } catch (const std::exception& error) {
         std::fprintf(stderr, "bench_goals: %s\n", error.what());
         return 1;
