@@ -165,7 +165,6 @@ int main(int argc, char** argv) {
     app.add_flag("--no-large", no_large, "--list: without icosphere-1.3M");
     app.add_flag("--no-huge", no_huge, "--list: without icosphere-8M");
     CLI11_PARSE(app, argc, argv);
-    phongrast::support::fix_large_allocations();
     s.selection = {!no_assets, !no_large, !no_huge};
     try {
         if (s.list) {

@@ -139,7 +139,6 @@ int main(int argc, char** argv) {
                  "in interleaved rounds in this process; print a Markdown row (medians in ms, ratios to the first)");
     app.add_option("--dump", s.dump, "write the last image's raw float RGB pixels here (to compare two builds with cmp)");
     CLI11_PARSE(app, argc, argv);
-    phongrast::support::fix_large_allocations();
     try {
         support::NamedScene named = support::speed_scene(s.name, s.rows);
         named.scene.shader = phongrast::parse_shader(s.shader);

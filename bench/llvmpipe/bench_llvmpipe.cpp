@@ -132,7 +132,6 @@ int main(int argc, char** argv) {
     app.add_flag("--no-assets", no_assets, "skip the meshes of ../shared/assets");
     app.add_option("--images", settings.images_dir, "write each scene's two renders and a difference heat map here");
     CLI11_PARSE(app, argc, argv);
-    phongrast::support::fix_large_allocations();
     settings.selection.large = !no_large;
     settings.selection.huge = !no_huge;
     settings.selection.assets = !no_assets;

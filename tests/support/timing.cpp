@@ -46,12 +46,6 @@ std::vector<double> interleaved_medians(int rounds, int warmup, const std::vecto
     return medians;
 }
 
-void fix_large_allocations() {
-#if defined(__GLIBC__)
-    mallopt(M_MMAP_THRESHOLD, 128 * 1024);  // setting it also turns off glibc's dynamic threshold
-#endif
-}
-
 bool restart_peak_resident() {
 #if defined(__GLIBC__)
     malloc_trim(0);

@@ -35,16 +35,6 @@ std::vector<Samples> interleaved_rounds(int rounds, int warmup, const std::vecto
 /// The median of each contender's samples of interleaved_rounds().
 std::vector<double> interleaved_medians(int rounds, int warmup, const std::vector<std::function<double()>>& contenders);
 
-/// Call first thing in a timing program: large blocks (128 KiB and up) are
-/// always given their own pages by glibc's malloc, instead of the heap once
-/// the program has freed a large block (glibc raises its mmap threshold then).
-/// Otherwise where a Renderer's buffers land depends on what the program
-/// freed before, and on a shared heap some placements make the same render
-/// about twice as slow (seen: Phong on icosphere-9.7k at 5 or at 9 ms from one
-/// Renderer to the next), which no median of interleaved rounds evens out.
-/// Does nothing outside glibc.
-void fix_large_allocations();
-
 /// Hands freed heap memory back to the system and restarts the peak resident
 /// memory count from what is resident now (Linux: /proc/self/clear_refs), so
 /// that peak_resident_bytes() leaves out what came and went before, such as a
