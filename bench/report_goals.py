@@ -109,7 +109,7 @@ def goal_lines(judged):
         else:
             scene, _, threads, (_, _, value) = max(rows, key=lambda row: row[3][2])
             where = f"worst: {scene} at {threads} thread(s), {value:.3g}"
-        lines.append(f"- {name}: {verdict(not failed)} on {len(rows) - failed} of {len(rows)} rows; {where}")
+        lines.append(f"- {name}: {verdict(not failed)} (met on {len(rows) - failed} of {len(rows)} rows); {where}")
     return lines
 
 
