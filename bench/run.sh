@@ -233,14 +233,20 @@ all() {
   done
   [ -n "$quick" ] && huge=""  # --quick leaves the 8M mesh out anyway
   mkdir -p "$build"
-  local part="$build/report-part"
+  local part="$build/report-part" loads=()
   header all $quick $huge >"$part-header.md"
+  # The load average as each part starts: on a shared machine other work shifts
+  # times, and not all cases alike (Phong full slows more than ambient-only).
+  loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
   echo "run.sh all: 1/4 phongrast against llvmpipe" >&2
   llvmpipe $quick $huge >"$part-llvmpipe.md"
+  loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
   echo "run.sh all: 2/4 ambient-only against full lighting, peak memory" >&2
   goals $quick $huge >"$part-goals.md"
+  loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
   echo "run.sh all: 3/4 speed steps" >&2
   speed --steps $quick >"$part-steps.md"
+  loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
   echo "run.sh all: 4/4 scaling" >&2
   scaling --quick >"$part-scaling.md"
   {
@@ -251,7 +257,8 @@ all() {
     echo
     echo "Ratios: phongrast's whole render over llvmpipe's frame plus its sort (section 1); ns per triangle:"
     echo "phongrast Gouraud exact (section 1) over the mesh's triangles, and times the threads; ambient and"
-    echo "memory: bench_goals, phongrast alone (section 2)."
+    echo "memory: bench_goals, phongrast alone (section 2). Load average as sections 1-4 started:"
+    echo "${loads[0]}; ${loads[1]}; ${loads[2]}; ${loads[3]}."
     echo
     "$python" bench/report.py summary "$build/llvmpipe-1-thread.txt" "$build/llvmpipe-2-threads.txt" "$part-goals.md"
     echo
