@@ -10,6 +10,7 @@
 //     so a change in the machine's load hits all four alike.
 // Prints one Markdown row per thread count; bench/report.py summary joins the
 // rows with bench_llvmpipe's tables (bench/run.sh goals, bench/run.sh all).
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -31,11 +32,13 @@ using phongrast::Shader;
 
 constexpr double kMiB = 1024.0 * 1024.0;
 constexpr double kBudgetPerTriangle = 200.0, kBudgetPerPixel = 32.0;
+constexpr int kMaxRounds = 101;
 
 struct Settings {
     std::string scene = "icosphere-9.7k", mode = "exact";
     std::vector<int> threads = {1, 2};
     int rows = 0, repeat = 5;
+    double seconds = 2.0;
     bool header = false, list = false;
     support::SpeedSceneSelection selection;
 };
@@ -80,7 +83,8 @@ PeakMemory peak_memory(phongrast::Scene& scene, int threads) {
 }
 
 /// Medians in ms of Phong full, Phong ambient, Gouraud ambient, flat ambient, in interleaved rounds.
-std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast::RenderOptions& options, int repeat) {
+std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast::RenderOptions& options, int repeat,
+                                        double seconds) {
     struct Case {
         Shader shader;
         Lighting lighting;
@@ -102,7 +106,7 @@ std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast
             return support::time_ms([&] { renderers[k].render(scene); });
         });
     }
-    return support::interleaved_medians(repeat, 1, contenders);
+    return support::interleaved_medians_filling(seconds, repeat, std::max(repeat, kMaxRounds), contenders);
 }
 
 std::uint64_t mesh_bytes(const phongrast::Mesh& mesh) {
@@ -110,11 +114,12 @@ std::uint64_t mesh_bytes(const phongrast::Mesh& mesh) {
            mesh.normals.size() * sizeof(mesh.normals[0]) + mesh.triangles.size() * sizeof(mesh.triangles[0]);
 }
 
-void print_header(int repeat, const std::string& mode, bool restarted) {
-    std::printf("phongrast alone, RenderOptions::%s(); times: medians of %d interleaved rounds after 1 warm-up; "
+void print_header(int repeat, double seconds, const std::string& mode, bool restarted) {
+    std::printf("phongrast alone, RenderOptions::%s(); times: medians of interleaved rounds after 1 warm-up, at least "
+                "%d, more (up to %d) to fill about %.1f s per thread count; "
                 "peak memory: the largest of one render each of Gouraud and Phong, exact and seed, full lighting, "
                 "%s; budget: %.0f B x triangles + %.0f B x pixels\n\n",
-                mode.c_str(), repeat,
+                mode.c_str(), repeat, kMaxRounds, seconds,
                 restarted ? "counted from after the scene was built (program + mesh + render)"
                           : "counted since the process started (the peak could not be restarted here)",
                 kBudgetPerTriangle, kBudgetPerPixel);
@@ -133,10 +138,10 @@ void run(const Settings& s) {
     const double pixels = double(scene.image.rows) * double(scene.image.columns);
     const double budget = kBudgetPerTriangle * triangles + kBudgetPerPixel * pixels;
     const bool restarted = support::restart_peak_resident();
-    if (s.header) print_header(s.repeat, s.mode, restarted);
+    if (s.header) print_header(s.repeat, s.seconds, s.mode, restarted);
     for (int threads : s.threads) {
         const PeakMemory peak = peak_memory(scene, threads);
-        const std::vector<double> ms = ambient_and_full_ms(scene, options_for(s.mode, threads), s.repeat);
+        const std::vector<double> ms = ambient_and_full_ms(scene, options_for(s.mode, threads), s.repeat, s.seconds);
         std::printf("| %s | %s | %.0f | %dx%d | %d | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f | %.1f | %.1f | %.1f | %s "
                     "| %.1f | %.1f | %s |\n",
                     named.name.c_str(), support::speed_scene_class(named.name).c_str(), triangles, scene.image.columns,
@@ -157,7 +162,9 @@ int main(int argc, char** argv) {
     app.add_option("--rows", s.rows, "image side in pixels (default: the scene class's)");
     app.add_option("--mode", s.mode, "RenderOptions: exact or seed")->check(CLI::IsMember({"exact", "seed"}));
     app.add_option("--threads", s.threads, "thread counts, one row each")->check(CLI::Range(1, 256));
-    app.add_option("--repeat", s.repeat, "timed rounds (median)")->check(CLI::Range(1, 1000));
+    app.add_option("--repeat", s.repeat, "timed rounds (median), at least")->check(CLI::Range(1, 1000));
+    app.add_option("--seconds", s.seconds, "more rounds (up to 101) while the timed rounds would take less than this")
+        ->check(CLI::Range(0.0, 600.0));
     app.add_flag("--header", s.header, "print the table's title and header first");
     bool no_assets = false, no_large = false, no_huge = false;
     app.add_flag("--list", s.list, "print the names of the speed scenes (less those of --no-...) and stop");

@@ -179,7 +179,7 @@ llvmpipe() {
   local args=(--repeat "$repeat")
   if [ "${1:-}" = --quick ]; then
     shift
-    args=(--repeat 1 --no-large --no-assets --no-huge)
+    args=(--repeat 1 --seconds 0 --no-large --no-assets --no-huge)
   fi
   build bench_llvmpipe
   local bin="$build/bench/llvmpipe/bench_llvmpipe" one="$build/llvmpipe-1-thread.txt" two="$build/llvmpipe-2-threads.txt"
@@ -196,7 +196,8 @@ llvmpipe() {
 }
 
 # bench_goals, one process per scene (phongrast alone: llvmpipe's memory must not count);
-# at most 3 rounds for the 8M-triangle mesh, whose frames take seconds.
+# at least REPEAT rounds, more for small scenes (to fill 2 s), at most 3 for the
+# 8M-triangle mesh, whose frames take seconds.
 goals() {
   local quick=0 list=()
   while [ $# -gt 0 ]; do
@@ -208,13 +209,13 @@ goals() {
     shift
   done
   build bench_goals
-  local bin="$build/bench/bench_goals" first=--header k scenes
+  local bin="$build/bench/bench_goals" first=--header k seconds=2 scenes
   scenes=$("$bin" --list "${list[@]}")
   for scene in $scenes; do
     k=$repeat
-    [ "$quick" = 1 ] && k=3
+    [ "$quick" = 1 ] && k=3 seconds=0
     [ "$scene" = icosphere-8M ] && [ "$k" -gt 3 ] && k=3
-    "$bin" --scene "$scene" --repeat "$k" $first
+    "$bin" --scene "$scene" --repeat "$k" --seconds "$seconds" $first
     first=""
   done
 }

@@ -25,10 +25,13 @@ namespace {
 namespace support = phongrast::support;
 using support::NamedScene;
 
+constexpr int kMaxRounds = 101;
+
 struct Settings {
     int threads = 1;
     int repeat = 5;
     int huge_repeat = 3;
+    double seconds = 2.0;
     support::SpeedSceneSelection selection;
     std::string images_dir;
 };
@@ -36,7 +39,7 @@ struct Settings {
 /// phongrast (exact and seed) and llvmpipe on one scene and shader, in
 /// interleaved rounds: prints the table row, returns the image agreement line.
 std::string compare(support::LlvmpipeRenderer& llvmpipe, NamedScene& named, phongrast::Shader shader, int threads,
-                    int repeat, const std::string& images_dir) {
+                    int repeat, double fill_seconds, int max_rounds, const std::string& images_dir) {
     phongrast::Scene& scene = named.scene;
     scene.shader = shader;
     phongrast::RenderOptions exact = phongrast::RenderOptions::exact();
@@ -55,8 +58,8 @@ std::string compare(support::LlvmpipeRenderer& llvmpipe, NamedScene& named, phon
     phongrast::Image phongrast_image;
     std::vector<double> sort_s;
     llvmpipe.load(scene);
-    const std::vector<double> medians = support::interleaved_medians(
-        repeat, 1, {[&] { return time_phongrast(exact_renderer, &phongrast_image); },
+    const std::vector<double> medians = support::interleaved_medians_filling(
+        fill_seconds, repeat, max_rounds, {[&] { return time_phongrast(exact_renderer, &phongrast_image); },
                     [&] { return time_phongrast(seed_renderer, nullptr); },
                     [&] {
                         const support::FrameTimes times = llvmpipe.draw();
@@ -93,10 +96,10 @@ std::string compare(support::LlvmpipeRenderer& llvmpipe, NamedScene& named, phon
 
 void run(const Settings& settings) {
     support::LlvmpipeRenderer llvmpipe;
-    std::printf("llvmpipe: %s, LP_NUM_THREADS=%s; phongrast threads=%d; median of %d interleaved rounds after 1 warm-up "
-                "(%d for icosphere-8M)\n\n",
+    std::printf("llvmpipe: %s, LP_NUM_THREADS=%s; phongrast threads=%d; median of interleaved rounds after 1 warm-up: "
+                "at least %d, more (up to %d) to fill about %.1f s per row; %d for icosphere-8M\n\n",
                 llvmpipe.description().c_str(), std::getenv("LP_NUM_THREADS"), settings.threads, settings.repeat,
-                std::min(settings.repeat, settings.huge_repeat));
+                std::max(settings.repeat, kMaxRounds), settings.seconds, std::min(settings.repeat, settings.huge_repeat));
 
     std::printf("| scene | triangles | image | shader | threads | phongrast exact ms | phongrast seed ms | "
                 "llvmpipe ms (of which sort) | exact / llvmpipe | seed / llvmpipe | goal <= 0.25 |\n");
@@ -105,9 +108,12 @@ void run(const Settings& settings) {
     // One scene in memory at a time: the 8M-triangle mesh alone is about 0.4 GB.
     for (const std::string& name : support::speed_scene_names(settings.selection, notes)) {
         NamedScene named = support::speed_scene(name);
-        const int repeat = name == "icosphere-8M" ? std::min(settings.repeat, settings.huge_repeat) : settings.repeat;
+        const bool huge = name == "icosphere-8M";
+        const int repeat = huge ? std::min(settings.repeat, settings.huge_repeat) : settings.repeat;
+        const int max_rounds = huge ? repeat : std::max(repeat, kMaxRounds);
         for (phongrast::Shader shader : {phongrast::Shader::gouraud, phongrast::Shader::phong}) {
-            agreement_lines.push_back(compare(llvmpipe, named, shader, settings.threads, repeat, settings.images_dir));
+            agreement_lines.push_back(compare(llvmpipe, named, shader, settings.threads, repeat, settings.seconds,
+                                              max_rounds, settings.images_dir));
         }
     }
     for (const std::string& note : notes) std::cerr << "bench_llvmpipe: " << note << "\n";
@@ -125,6 +131,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 256));
     app.add_option("--repeat", settings.repeat, "timed runs per measurement (median), after one warm-up")
         ->check(CLI::Range(1, 1000));
+    app.add_option("--seconds", settings.seconds,
+                   "more rounds (up to 101) while the timed rounds of a row would take less than this")
+        ->check(CLI::Range(0.0, 600.0));
     app.add_option("--huge-repeat", settings.huge_repeat, "at most this many timed runs for icosphere-8M")
         ->check(CLI::Range(1, 1000));
     app.add_flag("--no-large", no_large, "skip the 1.3M-triangle 1024x1024 icosphere");

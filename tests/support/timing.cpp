@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -44,6 +45,17 @@ std::vector<double> interleaved_medians(int rounds, int warmup, const std::vecto
     std::vector<double> medians;
     for (Samples& values : interleaved_rounds(rounds, warmup, contenders)) medians.push_back(median(std::move(values)));
     return medians;
+}
+
+std::vector<double> interleaved_medians_filling(double seconds, int rounds, int max_rounds,
+                                                const std::vector<std::function<double()>>& contenders) {
+    const auto start = std::chrono::steady_clock::now();
+    for (const auto& run : contenders) run();  // the warm-up round, timed as a whole
+    const double round_seconds = milliseconds_since(start) / 1e3;
+    if (round_seconds > 0.0 && seconds > round_seconds * rounds) {
+        rounds = static_cast<int>(std::min<double>(max_rounds, std::ceil(seconds / round_seconds)));
+    }
+    return interleaved_medians(std::max(rounds, 1), 0, contenders);
 }
 
 bool restart_peak_resident() {
