@@ -13,6 +13,9 @@
         quantity), the shader x lighting and shared-mesh cases, 2-thread speed-ups
   bench/report.py llvmpipe FILE...
         bench_llvmpipe's tables (one process per thread count) as one table
+  bench/report.py summary LLVMPIPE_FILE... GOALS_FILE
+        the speed goals per scene class: bench_llvmpipe's tables (one file
+        per thread count) joined with bench_goals' rows, each goal met or not
   bench/report.py instructions PROGRAM [ARGUMENT...]
         the instructions one run of PROGRAM executes inside the render pipeline
         (valgrind --tool=callgrind), e.g. bench_speed_once --repeat 1 --warmup 0
@@ -31,6 +34,7 @@ import tempfile
 from collections import defaultdict
 
 from report_effects import effects_command, least_squares, to_ms
+from report_goals import summary_command
 
 
 def fit_slope(xs, ys):
@@ -246,7 +250,7 @@ def instructions_command(args):
 
 
 COMMANDS = {"effects": effects_command, "callgrind": callgrind_command, "scaling": scaling_command,
-            "llvmpipe": llvmpipe_command, "instructions": instructions_command}
+            "llvmpipe": llvmpipe_command, "summary": summary_command, "instructions": instructions_command}
 
 
 def main(argv):

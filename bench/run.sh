@@ -8,10 +8,14 @@
 #   bench/run.sh scaling [--quick | --full]                   docs/performance.md: time against triangles and pixels
 #   bench/run.sh accuracy [--quick] [phongrast_accuracy flags] docs/accuracy.md (plots into docs/images/)
 #   bench/run.sh llvmpipe [--quick] [bench_llvmpipe flags]    docs/llvmpipe.md: times and image agreement
-#   bench/run.sh all [--quick]                                llvmpipe, speed --steps and scaling in one report
+#   bench/run.sh goals [--quick] [--no-huge]                  ambient-only / full lighting, peak memory per scene
+#   bench/run.sh all [--quick] [--no-huge]                    the goals per scene class (a summary table each),
+#                                                             then llvmpipe, goals, speed --steps and scaling
+#                                                             (bench/run_all.sh runs it)
 #
 # --quick runs a small subset of each, in seconds to a few minutes, to check
-# that everything works; its numbers are not for the docs.
+# that everything works; its numbers are not for the docs. Without it the
+# 8M-triangle mesh at 2048x2048 is included (--no-huge leaves it out).
 # Environment: BUILD_DIR (default build/bench-release), REPEAT (timed rounds, default 5).
 # Needs the packages of cmake/debian-packages.txt (Google Benchmark; OSMesa for
 # llvmpipe) and Debian's /usr/bin/python3; --callgrind also needs valgrind
@@ -25,7 +29,7 @@ python=/usr/bin/python3
 [ -x "$python" ] || python=python3
 
 usage() {
-  sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
 }
 
@@ -89,7 +93,7 @@ effects() {
 speed_fields() { sed -n 's/.*median \([0-9.]*\) ms.*peak RSS \([0-9.]*\) MiB.*/\1 | \2/p'; }
 
 speed() {
-  local scenes="icosphere-9.7k suzanne spot armadillo icosphere-1.3M" steps=0 callgrind=0
+  local scenes="icosphere-9.7k suzanne spot armadillo icosphere-125k icosphere-1.3M" steps=0 callgrind=0
   while [ $# -gt 0 ]; do
     case "$1" in
       --quick) scenes="icosphere-9.7k spot"; repeat=3 ;;
@@ -175,7 +179,7 @@ llvmpipe() {
   local args=(--repeat "$repeat")
   if [ "${1:-}" = --quick ]; then
     shift
-    args=(--repeat 1 --no-large --no-assets)
+    args=(--repeat 1 --seconds 0 --no-large --no-assets --no-huge)
   fi
   build bench_llvmpipe
   local bin="$build/bench/llvmpipe/bench_llvmpipe" one="$build/llvmpipe-1-thread.txt" two="$build/llvmpipe-2-threads.txt"
@@ -191,25 +195,89 @@ llvmpipe() {
   echo "Renders and difference heat maps: $build/llvmpipe-images"
 }
 
+# bench_goals, one process per scene (phongrast alone: llvmpipe's memory must not count);
+# at least REPEAT rounds, more for small scenes (to fill 2 s), at most 3 for the
+# 8M-triangle mesh, whose frames take seconds.
+goals() {
+  local quick=0 list=()
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --quick) quick=1; list+=(--no-assets --no-large --no-huge) ;;
+      --no-huge) list+=(--no-huge) ;;
+      *) echo "run.sh goals: unknown argument $1 (expected --quick or --no-huge)" >&2; exit 2 ;;
+    esac
+    shift
+  done
+  build bench_goals
+  local bin="$build/bench/bench_goals" first=--header k seconds=2 scenes
+  scenes=$("$bin" --list "${list[@]}")
+  for scene in $scenes; do
+    k=$repeat
+    [ "$quick" = 1 ] && k=3 seconds=0
+    [ "$scene" = icosphere-8M ] && [ "$k" -gt 3 ] && k=3
+    "$bin" --scene "$scene" --repeat "$k" --seconds "$seconds" $first
+    first=""
+  done
+}
+
+# Every measurement into its own file first, then the report: the summary
+# per scene class (bench/report.py summary), then the detailed tables.
 all() {
-  local quick=""
-  [ "${1:-}" = --quick ] && quick=--quick
+  local quick="" huge=""
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --quick) quick=--quick ;;
+      --no-huge) huge=--no-huge ;;
+      *) echo "run.sh all: unknown argument $1 (expected --quick or --no-huge)" >&2; exit 2 ;;
+    esac
+    shift
+  done
+  [ -n "$quick" ] && huge=""  # --quick leaves the 8M mesh out anyway
   mkdir -p "$build"
+  local part="$build/report-part" loads=()
+  header all $quick $huge >"$part-header.md"
+  # The load average as each part starts: on a shared machine other work shifts
+  # times, and not all cases alike (Phong full slows more than ambient-only).
+  loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
+  echo "run.sh all: 1/4 phongrast against llvmpipe" >&2
+  llvmpipe $quick $huge >"$part-llvmpipe.md"
+  loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
+  echo "run.sh all: 2/4 ambient-only against full lighting, peak memory" >&2
+  goals $quick $huge >"$part-goals.md"
+  loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
+  echo "run.sh all: 3/4 speed steps" >&2
+  speed --steps $quick >"$part-steps.md"
+  loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
+  echo "run.sh all: 4/4 scaling" >&2
+  scaling --quick >"$part-scaling.md"
   {
     echo "# phongrast speed report"
     echo
-    header all $quick
+    cat "$part-header.md"
+    echo "## Summary: the goals per scene class"
+    echo
+    echo "Ratios: phongrast's whole render over llvmpipe's frame plus its sort (section 1); ns per triangle:"
+    echo "phongrast Gouraud exact (section 1) over the mesh's triangles, and times the threads; ambient and"
+    echo "memory: bench_goals, phongrast alone (section 2). Load average as sections 1-4 started:"
+    echo "${loads[0]}; ${loads[1]}; ${loads[2]}; ${loads[3]}."
+    echo
+    "$python" bench/report.py summary "$build/llvmpipe-1-thread.txt" "$build/llvmpipe-2-threads.txt" "$part-goals.md"
+    echo
     echo "## 1. phongrast against llvmpipe"
     echo
-    llvmpipe $quick
+    cat "$part-llvmpipe.md"
     echo
-    echo "## 2. The speed steps, one process per row"
+    echo "## 2. Ambient-only against full lighting, and peak memory (phongrast alone)"
     echo
-    speed --steps $quick
+    cat "$part-goals.md"
     echo
-    echo "## 3. Scaling"
+    echo "## 3. The speed steps, one process per row"
     echo
-    scaling --quick
+    cat "$part-steps.md"
+    echo
+    echo "## 4. Scaling"
+    echo
+    cat "$part-scaling.md"
     echo
     echo "- load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
   } | tee "$build/report.md"
@@ -220,6 +288,6 @@ all() {
 command=$1
 shift
 case "$command" in
-  effects | speed | scaling | accuracy | llvmpipe | all) "$command" "$@" ;;
+  effects | speed | scaling | accuracy | llvmpipe | goals | all) "$command" "$@" ;;
   *) usage ;;
 esac

@@ -19,26 +19,12 @@
 // Internal: detail::override_kernel_isa, to time the instruction sets in one process.
 #include "fill_types.hpp"
 #include "phongrast/render.hpp"
-#include "support/scenes.hpp"
-#include "support/shared_scenes.hpp"
+#include "support/speed_scenes.hpp"
 #include "support/timing.hpp"
 
 namespace {
 
 namespace support = phongrast::support;
-
-support::NamedScene find_scene(const std::string& name, int rows) {
-    if (name == "icosphere-9.7k") return support::icosphere_scene(name, 22, rows > 0 ? rows : 512);
-    if (name == "icosphere-1.3M") return support::icosphere_scene(name, 256, rows > 0 ? rows : 1024);
-    std::vector<std::string> notes;
-    for (support::NamedScene& scene : support::comparison_scenes(rows > 0 ? rows : 512, notes)) {
-        if (scene.name == name) return scene;
-    }
-    std::string why;
-    for (const std::string& note : notes) why += "; " + note;
-    throw std::invalid_argument("--scene: expected icosphere-9.7k, icosphere-1.3M or a mesh of ../shared/assets, got '" +
-                                name + "'" + why);
-}
 
 /// One way of rendering that --steps compares.
 struct Variant {
@@ -107,7 +93,9 @@ void dump_pixels(const std::string& path, const phongrast::Image& image) {
 /// Renders `repeat` times after `warmup` with one Renderer (as an application
 /// renders frame after frame) and prints the times, counts and memory.
 void time_renders(const Settings& s, const support::NamedScene& named, const phongrast::RenderOptions& options) {
-    const double rss_scene = support::peak_rss_mib();
+    // What is counted from here: the program, the scene with its mesh, the renderer.
+    support::restart_peak_resident();
+    const double rss_scene = double(support::peak_resident_bytes()) / (1 << 20);
     phongrast::Renderer renderer(options);
     for (int i = 0; i < s.warmup; ++i) renderer.render(named.scene);
     std::vector<double> ms;
@@ -125,7 +113,8 @@ void time_renders(const Settings& s, const support::NamedScene& named, const pho
                 s.threads, support::median(ms), *std::min_element(ms.begin(), ms.end()),
                 *std::max_element(ms.begin(), ms.end()), s.repeat,
                 static_cast<unsigned long long>(result.stats.triangles_drawn),
-                static_cast<unsigned long long>(result.stats.samples_shaded), support::peak_rss_mib(), rss_scene);
+                static_cast<unsigned long long>(result.stats.samples_shaded),
+                double(support::peak_resident_bytes()) / (1 << 20), rss_scene);
 }
 
 }  // namespace
@@ -133,7 +122,7 @@ void time_renders(const Settings& s, const support::NamedScene& named, const pho
 int main(int argc, char** argv) {
     CLI::App app{"Render one llvmpipe-comparison scene with phongrast and time it"};
     Settings s;
-    app.add_option("--scene", s.name, "icosphere-9.7k, icosphere-1.3M, or a mesh name of ../shared/assets (suzanne, ...)");
+    app.add_option("--scene", s.name, "icosphere-9.7k, icosphere-125k, icosphere-1.3M, icosphere-8M, or a mesh name of ../shared/assets (suzanne, ...)");
     app.add_option("--rows", s.rows, "image side in pixels (default: the comparison's)");
     app.add_option("--shader", s.shader, "flat, gouraud or phong");
     app.add_option("--mode", s.mode, "exact or seed")->check(CLI::IsMember({"exact", "seed"}));
@@ -151,7 +140,7 @@ int main(int argc, char** argv) {
     app.add_option("--dump", s.dump, "write the last image's raw float RGB pixels here (to compare two builds with cmp)");
     CLI11_PARSE(app, argc, argv);
     try {
-        support::NamedScene named = find_scene(s.name, s.rows);
+        support::NamedScene named = support::speed_scene(s.name, s.rows);
         named.scene.shader = phongrast::parse_shader(s.shader);
         const phongrast::RenderOptions options = options_for(s);
         if (s.isa != "best") {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -45,25 +46,41 @@ std::uint64_t grid_key(std::array<std::pair<int, int>, 3> corner_weights) {
     return key;
 }
 
+/// Where each face's grid points went: points on the icosahedron's edges are
+/// shared with the neighbouring face (looked up by grid_key), points inside a
+/// face belong to it alone (a plain array, reused from face to face, so the
+/// hash table stays small even at millions of vertices).
+struct IcosphereIndex {
+    std::unordered_map<std::uint64_t, std::uint32_t> edge_points;
+    std::vector<std::uint32_t> face_points;  ///< per grid point (i, j) of the current face
+};
+
+constexpr std::uint32_t kNoVertex = ~std::uint32_t(0);
+
 /// Cuts one icosahedron face into frequency^2 triangles, adding each new grid point once.
-void add_icosahedron_face(Mesh& mesh, std::unordered_map<std::uint64_t, std::uint32_t>& index_of,
-                          const std::array<int, 3>& face, int frequency, double bump) {
-    // Grid point (i, j): weight i on the face's second corner, j on its third.
+void add_icosahedron_face(Mesh& mesh, IcosphereIndex& index, const std::array<int, 3>& face, int frequency,
+                          double bump) {
+    index.face_points.assign(std::size_t(frequency + 1) * std::size_t(frequency + 2) / 2, kNoVertex);
+    // Grid point (i, j): weight i on the face's second corner, j on its third; row i holds j = 0..frequency - i.
     const auto vertex = [&](int i, int j) {
+        std::uint32_t& slot = index.face_points[std::size_t(i) * std::size_t(frequency + 1) -
+                                                std::size_t(i) * std::size_t(i - 1) / 2 + std::size_t(j)];
+        if (slot != kNoVertex) return slot;
         const int weights[3] = {frequency - i - j, i, j};
-        const std::uint64_t key = grid_key({{{face[0], weights[0]}, {face[1], weights[1]}, {face[2], weights[2]}}});
-        const auto [it, inserted] = index_of.try_emplace(key, std::uint32_t(mesh.positions.size()));
-        if (inserted) {
-            glm::dvec3 mix(0.0);
-            for (int k = 0; k < 3; ++k) mix += double(weights[k]) * kIcosahedronVertices[face[k]];
-            const glm::dvec3 d = glm::normalize(mix);
-            const double radius =
-                1.0 + bump * std::sin(5.0 * d.x + 1.0) * std::cos(4.0 * d.y) * std::sin(3.0 * d.z + 0.5);
-            mesh.positions.push_back(radius * d);
-            mesh.colors.push_back(glm::vec3(0.55 + 0.4 * std::sin(3.0 * d.x + 0.3), 0.55 + 0.4 * std::sin(3.0 * d.y + 2.0),
-                                            0.55 + 0.4 * std::sin(3.0 * d.z + 4.0)));
+        slot = std::uint32_t(mesh.positions.size());
+        if (weights[0] == 0 || i == 0 || j == 0) {
+            const std::uint64_t key = grid_key({{{face[0], weights[0]}, {face[1], weights[1]}, {face[2], weights[2]}}});
+            const auto [it, inserted] = index.edge_points.try_emplace(key, slot);
+            if (!inserted) return slot = it->second;
         }
-        return it->second;
+        glm::dvec3 mix(0.0);
+        for (int k = 0; k < 3; ++k) mix += double(weights[k]) * kIcosahedronVertices[face[k]];
+        const glm::dvec3 d = glm::normalize(mix);
+        const double radius = 1.0 + bump * std::sin(5.0 * d.x + 1.0) * std::cos(4.0 * d.y) * std::sin(3.0 * d.z + 0.5);
+        mesh.positions.push_back(radius * d);
+        mesh.colors.push_back(glm::vec3(0.55 + 0.4 * std::sin(3.0 * d.x + 0.3), 0.55 + 0.4 * std::sin(3.0 * d.y + 2.0),
+                                        0.55 + 0.4 * std::sin(3.0 * d.z + 4.0)));
+        return slot;
     };
     for (int i = 0; i < frequency; ++i) {
         for (int j = 0; i + j < frequency; ++j) {
@@ -150,13 +167,13 @@ Mesh torus(int rings, int sides, double major, double minor) {
 Mesh icosphere(int frequency, double bump) {
     if (frequency < 1 || frequency > 1023) throw std::invalid_argument("icosphere: frequency: expected 1..1023");
     Mesh mesh;
-    std::unordered_map<std::uint64_t, std::uint32_t> index_of;
+    IcosphereIndex index;
+    index.edge_points.reserve(30 * std::size_t(frequency) + 12);  // the icosahedron's 30 edges and 12 corners
     const std::size_t vertices = 10 * std::size_t(frequency) * std::size_t(frequency) + 2;
-    index_of.reserve(vertices);
     mesh.positions.reserve(vertices);
     mesh.colors.reserve(vertices);
     mesh.triangles.reserve(20 * std::size_t(frequency) * std::size_t(frequency));
-    for (const auto& face : kIcosahedronFaces) add_icosahedron_face(mesh, index_of, face, frequency, bump);
+    for (const auto& face : kIcosahedronFaces) add_icosahedron_face(mesh, index, face, frequency, bump);
     return mesh;
 }
 

@@ -97,8 +97,9 @@ std::vector<NamedScene> shared_scenes(const std::string& folder, int rows, int c
     return scenes;
 }
 
-std::vector<NamedScene> comparison_scenes(int rows, std::vector<std::string>& notes) {
-    std::vector<NamedScene> scenes = shared_scenes(shared_assets_folder(), rows, rows, {}, notes);
+std::vector<NamedScene> comparison_scenes(int rows, std::vector<std::string>& notes,
+                                          const std::vector<std::string>& names) {
+    std::vector<NamedScene> scenes = shared_scenes(shared_assets_folder(), rows, rows, names, notes);
     for (NamedScene& named : scenes) {
         Scene& scene = named.scene;
         // The recipe puts the eye 2.5 bounding-box diagonals from the centre.

@@ -53,10 +53,12 @@ std::vector<SharedMeshFile> read_shared_meshes(const std::string& folder, const 
 std::vector<NamedScene> shared_scenes(const std::string& folder, int rows, int columns,
                                       const std::vector<std::string>& names, std::vector<std::string>& notes);
 
-/// Every shared mesh found in shared_assets_folder() as the llvmpipe comparison,
-/// the speed runner and the scaling benchmark render it: framed_scene() at
-/// rows x rows, three_lights() scaled to the mesh, vertex normals computed.
-std::vector<NamedScene> comparison_scenes(int rows, std::vector<std::string>& notes);
+/// Every shared mesh found in shared_assets_folder() (those named in `names`,
+/// all when empty) as the llvmpipe comparison, the speed runner and the scaling
+/// benchmark render it: framed_scene() at rows x rows, three_lights() scaled to
+/// the mesh, vertex normals computed.
+std::vector<NamedScene> comparison_scenes(int rows, std::vector<std::string>& notes,
+                                          const std::vector<std::string>& names = {});
 
 /// A scene file with its mesh and material resolved, as `phongrast render` reads it.
 /// Throws (io errors name the file) when it cannot be read.

@@ -3,7 +3,14 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
+#include <fstream>
 #include <stdexcept>
+#include <string>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace phongrast::support {
 
@@ -40,10 +47,36 @@ std::vector<double> interleaved_medians(int rounds, int warmup, const std::vecto
     return medians;
 }
 
-double peak_rss_mib() {
+std::vector<double> interleaved_medians_filling(double seconds, int rounds, int max_rounds,
+                                                const std::vector<std::function<double()>>& contenders) {
+    const auto start = std::chrono::steady_clock::now();
+    for (const auto& run : contenders) run();  // the warm-up round, timed as a whole
+    const double round_seconds = milliseconds_since(start) / 1e3;
+    if (round_seconds > 0.0 && seconds > round_seconds * rounds) {
+        rounds = static_cast<int>(std::min<double>(max_rounds, std::ceil(seconds / round_seconds)));
+    }
+    return interleaved_medians(std::max(rounds, 1), 0, contenders);
+}
+
+bool restart_peak_resident() {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+    std::ofstream clear_refs("/proc/self/clear_refs");
+    clear_refs << "5";  // "5": reset the peak resident set size to the current one (proc(5))
+    clear_refs.flush();
+    return bool(clear_refs);
+}
+
+std::uint64_t peak_resident_bytes() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.rfind("VmHWM:", 0) == 0) return std::stoull(line.substr(6)) * 1024;  // "VmHWM:  1234 kB"
+    }
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+    return static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
 }
 
 }  // namespace phongrast::support

@@ -6,6 +6,7 @@
 #define PHONGRAST_SUPPORT_TIMING_HPP
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -34,8 +35,25 @@ std::vector<Samples> interleaved_rounds(int rounds, int warmup, const std::vecto
 /// The median of each contender's samples of interleaved_rounds().
 std::vector<double> interleaved_medians(int rounds, int warmup, const std::vector<std::function<double()>>& contenders);
 
-/// The process's peak resident memory so far, in MiB (getrusage).
-double peak_rss_mib();
+/// interleaved_medians() with one warm-up round and at least `rounds` rounds,
+/// more if fewer than that would take `seconds` (judged by the warm-up round's
+/// wall time), at most `max_rounds`: cases of a millisecond or two get enough
+/// rounds that the few disturbed by other work on a shared machine do not move
+/// the median, while cases of seconds keep `rounds`.
+std::vector<double> interleaved_medians_filling(double seconds, int rounds, int max_rounds,
+                                                const std::vector<std::function<double()>>& contenders);
+
+/// Hands freed heap memory back to the system and restarts the peak resident
+/// memory count from what is resident now (Linux: /proc/self/clear_refs), so
+/// that peak_resident_bytes() leaves out what came and went before, such as a
+/// mesh generator's scratch. False where that cannot be done: the peak then
+/// still counts everything since the process started.
+bool restart_peak_resident();
+
+/// The peak resident memory since the process started or since the last
+/// successful restart_peak_resident(), in bytes (VmHWM of /proc/self/status;
+/// getrusage where that is missing).
+std::uint64_t peak_resident_bytes();
 
 }  // namespace phongrast::support
 
