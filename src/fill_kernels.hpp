@@ -85,17 +85,11 @@ private:
     Real dq_[3] = {};
 };
 
-#if defined(__GNUC__) || defined(__clang__)
-#define PHONGRAST_FILL_NOINLINE __attribute__((noinline))
-#else
-#define PHONGRAST_FILL_NOINLINE
-#endif
-
 /// for_each_weighted_span() for a triangle that is not tiny: row by row, each
 /// span solved from the edge functions. Kept out of line, so that the tiny
 /// triangles' path keeps its values in registers.
 template <typename Real, bool Perspective, typename Visit>
-PHONGRAST_FILL_NOINLINE void for_each_weighted_row(const CoveredRows& rows, const DrawTriangle<Real>& draw,
+PHONGRAST_NOINLINE void for_each_weighted_row(const CoveredRows& rows, const DrawTriangle<Real>& draw,
                                                    Visit& visit) {
     SpanWeights<Real, Perspective> weights;
     bool weights_set_up = false;

@@ -34,13 +34,16 @@
 /// For the per-triangle code of the fill: inlined even into a kernel compiled
 /// for another instruction set (a baseline function may always be inlined
 /// into an AVX2 one), where GCC's size heuristics would otherwise keep a call.
-/// PHONGRAST_INLINE_LAMBDA does the same for a lambda, written after its parameters.
+/// PHONGRAST_INLINE_LAMBDA does the same for a lambda, written after its
+/// parameters; PHONGRAST_NOINLINE keeps a rarely taken path out of the caller.
 #if defined(__GNUC__) || defined(__clang__)
 #define PHONGRAST_ALWAYS_INLINE inline __attribute__((always_inline))
 #define PHONGRAST_INLINE_LAMBDA __attribute__((always_inline))
+#define PHONGRAST_NOINLINE __attribute__((noinline))
 #else
 #define PHONGRAST_ALWAYS_INLINE inline
 #define PHONGRAST_INLINE_LAMBDA
+#define PHONGRAST_NOINLINE
 #endif
 
 namespace phongrast::detail {
@@ -292,6 +295,16 @@ private:
     std::int64_t threshold_[3];  ///< 0 for a top or left edge, else 1
 };
 
+/// for_each_covered_span() for a triangle that is not tiny, row by row. Kept
+/// out of line, so that the tiny triangles' path keeps its values in registers.
+template <typename VisitSpan>
+PHONGRAST_NOINLINE void for_each_solved_span(const CoveredRows& rows, VisitSpan& visit_span) {
+    for (int row = rows.first_row(); row <= rows.last_row(); ++row) {
+        CoveredSpan span;
+        if (rows.solve(row, span)) visit_span(span.row, span.first_column, span.count, span.e, rows.step());
+    }
+}
+
 /// Calls visit_span(row, first_column, count, e, step) for every row in
 /// [row_begin, row_end) where the triangle covers pixel centres, with e as in
 /// CoveredSpan and step[i] the change of e[i] per column.
@@ -299,17 +312,14 @@ template <typename VisitSpan>
 void for_each_covered_span(const CoverageTriangle& t, int row_begin, int row_end, VisitSpan&& visit_span) {
     const CoveredRows rows(t, row_begin, row_end);
     if (rows.empty()) return;
-    if (rows.tiny()) {
-        CoveredSpan spans[2];
-        const int found = rows.tiny_spans(spans);
-        for (int s = 0; s < found; ++s) {
-            visit_span(spans[s].row, spans[s].first_column, spans[s].count, spans[s].e, rows.step());
-        }
+    if (!rows.tiny()) {
+        for_each_solved_span(rows, visit_span);
         return;
     }
-    for (int row = rows.first_row(); row <= rows.last_row(); ++row) {
-        CoveredSpan span;
-        if (rows.solve(row, span)) visit_span(span.row, span.first_column, span.count, span.e, rows.step());
+    CoveredSpan spans[2];
+    const int found = rows.tiny_spans(spans);
+    for (int s = 0; s < found; ++s) {
+        visit_span(spans[s].row, spans[s].first_column, spans[s].count, spans[s].e, rows.step());
     }
 }
 
