@@ -276,15 +276,20 @@ private:
 
     /// tiny_spans() for one row whose biased values at the first column are `left`: 0 or 1 span.
     PHONGRAST_ALWAYS_INLINE int tiny_row(int row, const std::int64_t* left, CoveredSpan* span) const {
-        const std::int64_t right[3] = {left[0] + step_column_[0], left[1] + step_column_[1],
-                                       left[2] + step_column_[2]};
-        const bool left_in = (left[0] | left[1] | left[2]) >= 0;
-        const bool right_in = span_columns_ > 0 && (right[0] | right[1] | right[2]) >= 0;
+        // Scalars, not arrays: GCC would otherwise pair these up in vector
+        // registers through the stack, loading 16 bytes just stored as two 8s (a stall).
+        const std::int64_t left0 = left[0], left1 = left[1], left2 = left[2];
+        const std::int64_t right0 = left0 + step_column_[0], right1 = left1 + step_column_[1],
+                           right2 = left2 + step_column_[2];
+        const bool left_in = (left0 | left1 | left2) >= 0;
+        const bool right_in = span_columns_ > 0 && (right0 | right1 | right2) >= 0;
         if (!(left_in || right_in)) return 0;
         span->row = row;
         span->first_column = column_min_ + (left_in ? 0 : 1);
         span->count = int(left_in) + int(right_in);
-        for (int i = 0; i < 3; ++i) span->e[i] = (left_in ? left[i] : right[i]) + threshold_[i];
+        span->e[0] = (left_in ? left0 : right0) + threshold_[0];
+        span->e[1] = (left_in ? left1 : right1) + threshold_[1];
+        span->e[2] = (left_in ? left2 : right2) + threshold_[2];
         return 1;
     }
 
