@@ -71,11 +71,15 @@ public:
     PHONGRAST_FILL_INLINE void set_up(const DrawTriangle<Real>& draw, const std::int64_t* step) {
         inverse_area_ = Real(1) / static_cast<Real>(draw.coverage.area2);
         if constexpr (Perspective) inverse_depths(draw, inverse_depth_);
-        for (int i = 0; i < 3; ++i) dq_[i] = edge_weight<Real, Perspective>(step[i], inverse_area_, inverse_depth_[i]);
+        for (int i = 0; i < 3; ++i) {
+            dq_[i] = edge_weight<Real, Perspective>(step[i], inverse_area_, inverse_depth_[i]);
+        }
     }
     /// The weights at a span's first sample, whose edge values are e.
     PHONGRAST_FILL_INLINE void at(const std::int64_t* e, Real* q) const {
-        for (int i = 0; i < 3; ++i) q[i] = edge_weight<Real, Perspective>(e[i], inverse_area_, inverse_depth_[i]);
+        for (int i = 0; i < 3; ++i) {
+            q[i] = edge_weight<Real, Perspective>(e[i], inverse_area_, inverse_depth_[i]);
+        }
     }
     const Real* step() const { return dq_; }
 
@@ -90,7 +94,7 @@ private:
 /// triangles' path keeps its values in registers.
 template <typename Real, bool Perspective, typename Visit>
 PHONGRAST_NOINLINE void for_each_weighted_row(const CoveredRows& rows, const DrawTriangle<Real>& draw,
-                                                   Visit& visit) {
+                                              Visit& visit) {
     SpanWeights<Real, Perspective> weights;
     bool weights_set_up = false;
     Real q[3];
@@ -113,8 +117,8 @@ PHONGRAST_NOINLINE void for_each_weighted_row(const CoveredRows& rows, const Dra
 /// bounding box holds at most 2 x 2 samples (most triangles of a large mesh)
 /// has them tested directly.
 template <typename Real, bool Perspective, typename Visit>
-PHONGRAST_FILL_INLINE void for_each_weighted_span(const DrawTriangle<Real>& draw, const FillTarget<Real>& target,
-                                                  Visit&& visit) {
+PHONGRAST_FILL_INLINE void for_each_weighted_span(const DrawTriangle<Real>& draw,
+                                                  const FillTarget<Real>& target, Visit&& visit) {
     const CoveredRows rows(draw.coverage, target.row_begin, target.row_end);
     if (rows.empty()) return;
     if (!rows.tiny()) {
@@ -152,10 +156,12 @@ PHONGRAST_FILL_INLINE glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_
 /// there. Each span starts from weights derived from exact edge values and
 /// steps them by a constant per column.
 template <typename Real, bool Perspective, typename Shade>
-PHONGRAST_FILL_INLINE void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shade&& shade) {
+PHONGRAST_FILL_INLINE void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target,
+                                        Shade&& shade) {
     Image& image = target.image;
     for_each_weighted_span<Real, Perspective>(
-        draw, target, [&](int row, int first_column, int count, const Real* q, const Real* dq) PHONGRAST_INLINE_LAMBDA {
+        draw, target,
+        [&](int row, int first_column, int count, const Real* q, const Real* dq) PHONGRAST_INLINE_LAMBDA {
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns);
         const std::uint32_t* owners = owner_row(target, row);
         target.covered += static_cast<std::uint64_t>(count);
@@ -247,7 +253,8 @@ void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& targe
         n = 0;
     };
     for_each_weighted_span<Real, Perspective>(
-        draw, target, [&](int row, int first_column, int count, const Real* q, const Real* dq) PHONGRAST_INLINE_LAMBDA {
+        draw, target,
+        [&](int row, int first_column, int count, const Real* q, const Real* dq) PHONGRAST_INLINE_LAMBDA {
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns) +
                                       static_cast<std::size_t>(first_column);
         const std::uint32_t* owners = owner_row(target, row);

@@ -215,7 +215,8 @@ public:
             // Narrow (under 16 columns): walk the row with incremental edge values; cheaper than dividing.
             std::int64_t e0 = value[0], e1 = value[1], e2 = value[2];
             std::int64_t k = 0;
-            for (; k <= span_columns_; ++k, e0 += step_column_[0], e1 += step_column_[1], e2 += step_column_[2]) {
+            for (; k <= span_columns_;
+                 ++k, e0 += step_column_[0], e1 += step_column_[1], e2 += step_column_[2]) {
                 if ((e0 | e1 | e2) >= 0) break;
             }
             if (k > span_columns_) return false;
@@ -262,12 +263,11 @@ public:
     }
 
 private:
-    PHONGRAST_ALWAYS_INLINE void set_up_edge(int i, const SnappedPoint& a, const SnappedPoint& b, std::int64_t origin_x,
-                                             std::int64_t origin_y) {
+    PHONGRAST_ALWAYS_INLINE void set_up_edge(int i, const SnappedPoint& a, const SnappedPoint& b,
+                                             std::int64_t origin_x, std::int64_t origin_y) {
         const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
-        // Top-left edges (a top edge: dy == 0 and dx > 0; a left edge: dy < 0)
-        // own the centres on them; the others need a value of at least 1.
-        // The others: dy > 0, or dy == 0 and dx <= 0, i.e. 2 dy - [dx > 0] >= 0.
+        // Top-left edges (top: dy == 0 and dx > 0; left: dy < 0) own the centres on
+        // them; the others (dy > 0, or dy == 0 and dx <= 0: 2 dy - [dx > 0] >= 0) need 1.
         threshold_[i] = std::int64_t(2 * dy - std::int64_t(dx > 0) >= 0);
         biased_[i] = edge_value(a, b, origin_x, origin_y) - threshold_[i];
         step_column_[i] = -dy * kSubpixelScale;

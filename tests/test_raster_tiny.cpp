@@ -141,7 +141,8 @@ Corners random_corners(std::mt19937& rng) {
             const double width = 0.001 + 0.3 * unit(rng), dx = std::cos(angle), dy = std::sin(angle);
             c.x[0] = cx, c.y[0] = cy;
             c.x[1] = cx + length * dx, c.y[1] = cy + length * dy;
-            c.x[2] = cx + unit(rng) * length * dx - width * dy, c.y[2] = cy + unit(rng) * length * dy + width * dx;
+            const double along = unit(rng) * length;
+            c.x[2] = cx + along * dx - width * dy, c.y[2] = cy + along * dy + width * dx;
             break;
         }
         case 2: {  // axis-aligned sliver along a row or a column of centres
@@ -185,11 +186,11 @@ TEST_CASE("tiny triangles: the direct test of the bounding box finds the general
     for (int n = 0; n < 60000; ++n) {
         const Corners c = random_corners(rng);
         CoverageTriangle t;
-        if (!setup_coverage(snap(c.x[0], c.y[0]), snap(c.x[1], c.y[1]), snap(c.x[2], c.y[2]), kRows, kColumns, t)) {
-            continue;
-        }
+        const SnappedPoint a = snap(c.x[0], c.y[0]), b = snap(c.x[1], c.y[1]), d = snap(c.x[2], c.y[2]);
+        if (!setup_coverage(a, b, d, kRows, kColumns, t)) continue;
         // The whole image, the 16-row bands and a random cut of 1 to 3 rows through the triangle.
-        const int cut_begin = t.row_min + static_cast<int>(rng() % 2), cut_end = cut_begin + 1 + int(rng() % 3);
+        const int cut_begin = t.row_min + static_cast<int>(rng() % 2);
+        const int cut_end = cut_begin + 1 + static_cast<int>(rng() % 3);
         const int bands[][2] = {{0, kRows}, {0, 16}, {16, 32}, {32, kRows}, {cut_begin, cut_end}};
         const double depth_values[3] = {depth_range(rng), depth_range(rng), depth_range(rng)};
         const float depth_f[3] = {float(depth_values[0]), float(depth_values[1]), float(depth_values[2])};
@@ -216,8 +217,8 @@ TEST_CASE("tiny triangles: the direct test of the bounding box finds the general
         }
     }
     // The cases the comparison is meant to reach were reached.
-    INFO(tiny << " tiny, " << tiny_covering_none << " covering none, " << tiny_covering_several << " covering 3, "
-              << general << " general, " << band_cuts << " cut by a band");
+    INFO(tiny << " tiny, " << tiny_covering_none << " covering none, " << tiny_covering_several
+              << " covering 3, " << general << " general, " << band_cuts << " cut by a band");
     CHECK(tiny > 30000);
     CHECK(tiny_covering_none > 10000);
     CHECK(tiny_covering_several > 3000);
