@@ -35,30 +35,112 @@ inline namespace PHONGRAST_FILL_ISA {
 
 /// 1 / depth of each corner, for perspective-correct weights.
 template <typename Real>
-void inverse_depths(const DrawTriangle<Real>& draw, Real* inverse) {
+PHONGRAST_FILL_INLINE void inverse_depths(const DrawTriangle<Real>& draw, Real* inverse) {
     for (int i = 0; i < 3; ++i) inverse[i] = Real(1) / draw.depth[i];
 }
 
+/// A vertex's interpolation weight where its edge value is `edge` (or its
+/// change per column where `edge` is the edge's step): the screen-space
+/// weight, divided by the vertex's depth when perspective-correct.
+template <typename Real, bool Perspective>
+inline Real edge_weight(std::int64_t edge, Real inverse_area, Real inverse_depth) {
+    Real q = static_cast<Real>(edge) * inverse_area;
+    if constexpr (Perspective) q *= inverse_depth;
+    return q;
+}
+
 /// The interpolation weights q at a span's first sample and their step dq per
-/// column, from the exact edge values e and steps: screen-space weights,
-/// divided by each vertex's depth when perspective-correct.
+/// column, from the exact edge values e and steps.
 template <typename Real, bool Perspective>
 inline void span_weights(const std::int64_t* e, const std::int64_t* step, Real inverse_area,
                          const Real* inverse_depth, Real* q, Real* dq) {
     for (int i = 0; i < 3; ++i) {
-        q[i] = static_cast<Real>(e[i]) * inverse_area;
-        dq[i] = static_cast<Real>(step[i]) * inverse_area;
-        if constexpr (Perspective) {
-            q[i] *= inverse_depth[i];
-            dq[i] *= inverse_depth[i];
+        q[i] = edge_weight<Real, Perspective>(e[i], inverse_area, inverse_depth[i]);
+        dq[i] = edge_weight<Real, Perspective>(step[i], inverse_area, inverse_depth[i]);
+    }
+}
+
+/// span_weights() for the kernels: dq is the same for every span of a
+/// triangle, so it is computed once, and the kernels set it up at the first
+/// covered span, so that the many tiny triangles that cover no sample pay
+/// none of its divisions. (Set up by a call, not held in a std::optional,
+/// whose code is compiled for the baseline instruction set.)
+template <typename Real, bool Perspective>
+class SpanWeights {
+public:
+    PHONGRAST_FILL_INLINE void set_up(const DrawTriangle<Real>& draw, const std::int64_t* step) {
+        inverse_area_ = Real(1) / static_cast<Real>(draw.coverage.area2);
+        if constexpr (Perspective) inverse_depths(draw, inverse_depth_);
+        for (int i = 0; i < 3; ++i) {
+            dq_[i] = edge_weight<Real, Perspective>(step[i], inverse_area_, inverse_depth_[i]);
         }
+    }
+    /// The weights at a span's first sample, whose edge values are e.
+    PHONGRAST_FILL_INLINE void at(const std::int64_t* e, Real* q) const {
+        for (int i = 0; i < 3; ++i) {
+            q[i] = edge_weight<Real, Perspective>(e[i], inverse_area_, inverse_depth_[i]);
+        }
+    }
+    const Real* step() const { return dq_; }
+
+private:
+    Real inverse_area_ = Real(0);
+    Real inverse_depth_[3] = {Real(1), Real(1), Real(1)};
+    Real dq_[3] = {};
+};
+
+/// for_each_weighted_span() for a triangle that is not tiny: row by row, each
+/// span solved from the edge functions. Kept out of line, so that the tiny
+/// triangles' path keeps its values in registers.
+template <typename Real, bool Perspective, typename Visit>
+PHONGRAST_NOINLINE void for_each_weighted_row(const CoveredRows& rows, const DrawTriangle<Real>& draw,
+                                              Visit& visit) {
+    SpanWeights<Real, Perspective> weights;
+    bool weights_set_up = false;
+    Real q[3];
+    for (int row = rows.first_row(); row <= rows.last_row(); ++row) {
+        CoveredSpan span;
+        if (!rows.solve(row, span)) continue;
+        if (!weights_set_up) {
+            weights.set_up(draw, rows.step());
+            weights_set_up = true;
+        }
+        weights.at(span.e, q);
+        visit(span.row, span.first_column, span.count, q, weights.step());
+    }
+}
+
+/// Calls visit(row, first_column, count, q, dq) for every span of samples
+/// the triangle covers in the target's rows, with SpanWeights' q and dq.
+/// Defined here, not in raster.hpp, so that it is compiled with the kernels'
+/// instruction set and the kernel's visitor inlines into it. A triangle whose
+/// bounding box holds at most 2 x 2 samples (most triangles of a large mesh)
+/// has them tested directly.
+template <typename Real, bool Perspective, typename Visit>
+PHONGRAST_FILL_INLINE void for_each_weighted_span(const DrawTriangle<Real>& draw,
+                                                  const FillTarget<Real>& target, Visit&& visit) {
+    const CoveredRows rows(draw.coverage, target.row_begin, target.row_end);
+    if (rows.empty()) return;
+    if (!rows.tiny()) {
+        for_each_weighted_row<Real, Perspective>(rows, draw, visit);
+        return;
+    }
+    CoveredSpan spans[2];
+    const int found = rows.tiny_spans(spans);
+    if (found == 0) return;
+    SpanWeights<Real, Perspective> weights;
+    weights.set_up(draw, rows.step());
+    Real q[3];
+    for (int s = 0; s < found; ++s) {
+        weights.at(spans[s].e, q);
+        visit(spans[s].row, spans[s].first_column, spans[s].count, q, weights.step());
     }
 }
 
 /// The last guard before a pixel is written: every input was validated
 /// finite, so this should never fire; if it does, the channel becomes 0 and
 /// is counted (RenderStats::nonfinite_values_replaced), never written as NaN.
-inline glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_t& replaced) {
+PHONGRAST_FILL_INLINE glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_t& replaced) {
     if (std::isfinite(pixel.x + pixel.y + pixel.z)) return pixel;
     for (int channel = 0; channel < 3; ++channel) {
         if (!std::isfinite(pixel[channel])) {
@@ -74,15 +156,12 @@ inline glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_t& replaced) {
 /// there. Each span starts from weights derived from exact edge values and
 /// steps them by a constant per column.
 template <typename Real, bool Perspective, typename Shade>
-void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target, Shade&& shade) {
-    const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2);
-    Real inverse_depth[3] = {Real(1), Real(1), Real(1)};
-    if constexpr (Perspective) inverse_depths(draw, inverse_depth);
+PHONGRAST_FILL_INLINE void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target,
+                                        Shade&& shade) {
     Image& image = target.image;
-    for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
-                          [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {
-        Real q[3], dq[3];
-        span_weights<Real, Perspective>(e, step, inverse_area, inverse_depth, q, dq);
+    for_each_weighted_span<Real, Perspective>(
+        draw, target,
+        [&](int row, int first_column, int count, const Real* q, const Real* dq) PHONGRAST_INLINE_LAMBDA {
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns);
         const std::uint32_t* owners = owner_row(target, row);
         target.covered += static_cast<std::uint64_t>(count);
@@ -141,9 +220,6 @@ void fill_flat(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVe
 /// whose spans are only a few samples long.
 template <typename Real, bool Perspective, typename ShadeBatch>
 void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& target, ShadeBatch&& shade_batch) {
-    const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2);
-    Real inverse_depth[3] = {Real(1), Real(1), Real(1)};
-    if constexpr (Perspective) inverse_depths(draw, inverse_depth);
     Image& image = target.image;
     Lanes<Real> w[3], depth, out[3];
     std::size_t index[kSampleBatch];
@@ -176,10 +252,9 @@ void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& targe
         }
         n = 0;
     };
-    for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
-                          [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {
-        Real q[3], dq[3];
-        span_weights<Real, Perspective>(e, step, inverse_area, inverse_depth, q, dq);
+    for_each_weighted_span<Real, Perspective>(
+        draw, target,
+        [&](int row, int first_column, int count, const Real* q, const Real* dq) PHONGRAST_INLINE_LAMBDA {
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns) +
                                       static_cast<std::size_t>(first_column);
         const std::uint32_t* owners = owner_row(target, row);

@@ -13,11 +13,7 @@
 
 /// The helpers below are meant to fold into shade_phong_batch(), so that its
 /// single-lane instantiation keeps a constant trip count throughout.
-#if defined(__GNUC__) || defined(__clang__)
-#define PHONGRAST_FILL_INLINE inline __attribute__((always_inline))
-#else
-#define PHONGRAST_FILL_INLINE inline
-#endif
+#define PHONGRAST_FILL_INLINE PHONGRAST_ALWAYS_INLINE
 
 namespace phongrast::detail {
 inline namespace PHONGRAST_FILL_ISA {

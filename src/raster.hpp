@@ -31,6 +31,21 @@
 #include <cmath>
 #include <cstdint>
 
+/// For the per-triangle code of the fill: inlined even into a kernel compiled
+/// for another instruction set (a baseline function may always be inlined
+/// into an AVX2 one), where GCC's size heuristics would otherwise keep a call.
+/// PHONGRAST_INLINE_LAMBDA does the same for a lambda, written after its
+/// parameters; PHONGRAST_NOINLINE keeps a rarely taken path out of the caller.
+#if defined(__GNUC__) || defined(__clang__)
+#define PHONGRAST_ALWAYS_INLINE inline __attribute__((always_inline))
+#define PHONGRAST_INLINE_LAMBDA __attribute__((always_inline))
+#define PHONGRAST_NOINLINE __attribute__((noinline))
+#else
+#define PHONGRAST_ALWAYS_INLINE inline
+#define PHONGRAST_INLINE_LAMBDA
+#define PHONGRAST_NOINLINE
+#endif
+
 namespace phongrast::detail {
 
 constexpr int kSubpixelBits = 8;
@@ -143,72 +158,173 @@ inline bool setup_coverage(const SnappedPoint& a, const SnappedPoint& b, const S
     return out.row_min <= out.row_max && out.column_min <= out.column_max;
 }
 
-/// Calls visit_span(row, first_column, count, e, step) for every row in
-/// [row_begin, row_end) where the triangle covers pixel centres: the covered
-/// centres of a row are contiguous (the triangle is convex), e[i] is the
-/// unbiased edge value opposite vertex i at the first of them (so e[i] / area2
-/// is vertex i's screen-space barycentric weight there) and step[i] its change
-/// per column. Each row's span is solved exactly from the three edge
-/// functions, so thin slivers cost their length, not their bounding box.
-template <typename VisitSpan>
-void for_each_covered_span(const CoverageTriangle& t, int row_begin, int row_end, VisitSpan&& visit_span) {
-    const int first_row = std::max(row_begin, t.row_min);
-    const int last_row = std::min(row_end - 1, t.row_max);
-    if (first_row > last_row) return;
-    const std::int64_t origin_x = std::int64_t(t.column_min) * kSubpixelScale + kHalfPixel;
-    const std::int64_t origin_y = std::int64_t(first_row) * kSubpixelScale + kHalfPixel;
-    std::int64_t at_origin[3], step_column[3], step_row[3], threshold[3];
-    for (int i = 0; i < 3; ++i) {
-        // Edge opposite vertex i runs from vertex i+1 to vertex i+2.
-        const SnappedPoint a = t.v[(i + 1) % 3];
-        const SnappedPoint b = t.v[(i + 2) % 3];
-        const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
-        const bool top = (dy == 0 && dx > 0);
-        const bool left = (dy < 0);
-        at_origin[i] = edge_value(a, b, origin_x, origin_y);
-        step_column[i] = -dy * kSubpixelScale;
-        step_row[i] = dx * kSubpixelScale;
-        threshold[i] = (top || left) ? 0 : 1;  // top-left edges own the centres on them
+/// The covered pixel centres of one row of a triangle: they are contiguous
+/// (the triangle is convex). e[i] is the unbiased edge value opposite vertex
+/// i at the first of them, so e[i] / area2 is vertex i's screen-space
+/// barycentric weight there.
+struct CoveredSpan {
+    int row;
+    int first_column;
+    int count;
+    std::int64_t e[3];
+};
+
+/// A triangle's edge functions set up for the rows [row_begin, row_end) of
+/// its bounding box, to find its covered centres row by row (solve()) or, for
+/// a bounding box of at most 2 x 2 centres, all at once (tiny_spans()). The
+/// member functions are inline and take no callback, so a fill kernel
+/// compiled for another instruction set inlines them into its own loop.
+///
+/// The values kept are biased by the top-left rule: a centre is covered when
+/// all three biased values are >= 0, i.e. when their bitwise OR is.
+class CoveredRows {
+public:
+    PHONGRAST_ALWAYS_INLINE CoveredRows(const CoverageTriangle& t, int row_begin, int row_end)
+        : first_row_(std::max(row_begin, t.row_min)),
+          last_row_(std::min(row_end - 1, t.row_max)),
+          column_min_(t.column_min),
+          span_columns_(t.column_max - t.column_min) {
+        const std::int64_t origin_x = std::int64_t(t.column_min) * kSubpixelScale + kHalfPixel;
+        const std::int64_t origin_y = std::int64_t(first_row_) * kSubpixelScale + kHalfPixel;
+        // The edge opposite vertex i runs from vertex i+1 to vertex i+2.
+        const SnappedPoint v0 = t.v[0], v1 = t.v[1], v2 = t.v[2];
+        set_up_edge(0, v1, v2, origin_x, origin_y);
+        set_up_edge(1, v2, v0, origin_x, origin_y);
+        set_up_edge(2, v0, v1, origin_x, origin_y);
     }
 
-    const std::int64_t span_columns = t.column_max - t.column_min;
-    for (int row = first_row; row <= last_row; ++row) {
-        const std::int64_t row_offset = row - first_row;
+    /// No row of the range meets the bounding box.
+    bool empty() const { return first_row_ > last_row_; }
+    int first_row() const { return first_row_; }
+    int last_row() const { return last_row_; }
+    /// The change of each edge value per column.
+    const std::int64_t* step() const { return step_column_; }
+    /// At most two rows and two columns of centres: tiny_spans() applies.
+    bool tiny() const { return last_row_ - first_row_ < 2 && span_columns_ < 2; }
+
+    /// The covered centres of `row` (in [first_row(), last_row()]) into
+    /// `span`; false if there are none. The span is solved exactly from the
+    /// three edge functions, so thin slivers cost their length, not their
+    /// bounding box.
+    PHONGRAST_ALWAYS_INLINE bool solve(int row, CoveredSpan& span) const {
         std::int64_t value[3];
-        for (int i = 0; i < 3; ++i) value[i] = at_origin[i] + step_row[i] * row_offset;
-        std::int64_t k_lo = 0, k_hi = span_columns;
-        if (span_columns < 16) {
+        const std::int64_t row_offset = row - first_row_;
+        for (int i = 0; i < 3; ++i) value[i] = biased_[i] + step_row_[i] * row_offset;
+        std::int64_t k_lo = 0, k_hi = span_columns_;
+        if (span_columns_ < 16) {
             // Narrow (under 16 columns): walk the row with incremental edge values; cheaper than dividing.
             std::int64_t e0 = value[0], e1 = value[1], e2 = value[2];
             std::int64_t k = 0;
-            for (; k <= span_columns; ++k, e0 += step_column[0], e1 += step_column[1], e2 += step_column[2]) {
-                if (e0 >= threshold[0] && e1 >= threshold[1] && e2 >= threshold[2]) break;
+            for (; k <= span_columns_;
+                 ++k, e0 += step_column_[0], e1 += step_column_[1], e2 += step_column_[2]) {
+                if ((e0 | e1 | e2) >= 0) break;
             }
-            if (k > span_columns) continue;
+            if (k > span_columns_) return false;
             k_lo = k;
-            for (++k, e0 += step_column[0], e1 += step_column[1], e2 += step_column[2]; k <= span_columns;
-                 ++k, e0 += step_column[0], e1 += step_column[1], e2 += step_column[2]) {
-                if (!(e0 >= threshold[0] && e1 >= threshold[1] && e2 >= threshold[2])) break;
+            for (++k, e0 += step_column_[0], e1 += step_column_[1], e2 += step_column_[2]; k <= span_columns_;
+                 ++k, e0 += step_column_[0], e1 += step_column_[1], e2 += step_column_[2]) {
+                if ((e0 | e1 | e2) < 0) break;
             }
             k_hi = k - 1;
         } else {
             for (int i = 0; i < 3; ++i) {
-                // The integer k in [k_lo, k_hi] with value + step * k >= threshold.
-                const std::int64_t need = threshold[i] - value[i];
-                if (step_column[i] > 0) {
-                    k_lo = std::max(k_lo, first_at_least(need, step_column[i]));
-                } else if (step_column[i] < 0) {
-                    k_hi = std::min(k_hi, last_at_most(-need, -step_column[i]));
+                // The integer k in [k_lo, k_hi] with value + step * k >= 0.
+                const std::int64_t need = -value[i];
+                if (step_column_[i] > 0) {
+                    k_lo = std::max(k_lo, first_at_least(need, step_column_[i]));
+                } else if (step_column_[i] < 0) {
+                    k_hi = std::min(k_hi, last_at_most(-need, -step_column_[i]));
                 } else if (need > 0) {
                     k_hi = -1;
                 }
             }
-            if (k_lo > k_hi) continue;
+            if (k_lo > k_hi) return false;
         }
-        const std::int64_t e[3] = {value[0] + step_column[0] * k_lo, value[1] + step_column[1] * k_lo,
-                                   value[2] + step_column[2] * k_lo};
-        visit_span(row, t.column_min + static_cast<int>(k_lo), static_cast<int>(k_hi - k_lo + 1), e,
-                   step_column);
+        span.row = row;
+        span.first_column = column_min_ + static_cast<int>(k_lo);
+        span.count = static_cast<int>(k_hi - k_lo + 1);
+        for (int i = 0; i < 3; ++i) span.e[i] = value[i] + step_column_[i] * k_lo + threshold_[i];
+        return true;
+    }
+
+    /// tiny() only: tests the (at most four) centres of the bounding box
+    /// directly, without solving rows. Writes the covered spans, in row
+    /// order, to spans[0..1] and returns their number: exactly what solve()
+    /// finds row by row.
+    PHONGRAST_ALWAYS_INLINE int tiny_spans(CoveredSpan* spans) const {
+        assert(tiny());
+        int found = tiny_row(first_row_, biased_, spans);
+        if (last_row_ > first_row_) {
+            const std::int64_t below[3] = {biased_[0] + step_row_[0], biased_[1] + step_row_[1],
+                                           biased_[2] + step_row_[2]};
+            found += tiny_row(last_row_, below, spans + found);
+        }
+        return found;
+    }
+
+private:
+    PHONGRAST_ALWAYS_INLINE void set_up_edge(int i, const SnappedPoint& a, const SnappedPoint& b,
+                                             std::int64_t origin_x, std::int64_t origin_y) {
+        const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+        // Top-left edges (top: dy == 0 and dx > 0; left: dy < 0) own the centres on
+        // them; the others (dy > 0, or dy == 0 and dx <= 0: 2 dy - [dx > 0] >= 0) need 1.
+        threshold_[i] = std::int64_t(2 * dy - std::int64_t(dx > 0) >= 0);
+        biased_[i] = edge_value(a, b, origin_x, origin_y) - threshold_[i];
+        step_column_[i] = -dy * kSubpixelScale;
+        step_row_[i] = dx * kSubpixelScale;
+    }
+
+    /// tiny_spans() for one row whose biased values at the first column are `left`: 0 or 1 span.
+    PHONGRAST_ALWAYS_INLINE int tiny_row(int row, const std::int64_t* left, CoveredSpan* span) const {
+        // Scalars, not arrays: GCC would otherwise pair these up in vector
+        // registers through the stack, loading 16 bytes just stored as two 8s (a stall).
+        const std::int64_t left0 = left[0], left1 = left[1], left2 = left[2];
+        const std::int64_t right0 = left0 + step_column_[0], right1 = left1 + step_column_[1],
+                           right2 = left2 + step_column_[2];
+        const bool left_in = (left0 | left1 | left2) >= 0;
+        const bool right_in = span_columns_ > 0 && (right0 | right1 | right2) >= 0;
+        if (!(left_in || right_in)) return 0;
+        span->row = row;
+        span->first_column = column_min_ + (left_in ? 0 : 1);
+        span->count = int(left_in) + int(right_in);
+        span->e[0] = (left_in ? left0 : right0) + threshold_[0];
+        span->e[1] = (left_in ? left1 : right1) + threshold_[1];
+        span->e[2] = (left_in ? left2 : right2) + threshold_[2];
+        return 1;
+    }
+
+    int first_row_, last_row_, column_min_;
+    std::int64_t span_columns_;  ///< the bounding box's columns minus one
+    std::int64_t biased_[3];     ///< edge values at the first row's first centre, minus the thresholds
+    std::int64_t step_column_[3], step_row_[3];
+    std::int64_t threshold_[3];  ///< 0 for a top or left edge, else 1
+};
+
+/// for_each_covered_span() for a triangle that is not tiny, row by row. Kept
+/// out of line, so that the tiny triangles' path keeps its values in registers.
+template <typename VisitSpan>
+PHONGRAST_NOINLINE void for_each_solved_span(const CoveredRows& rows, VisitSpan& visit_span) {
+    for (int row = rows.first_row(); row <= rows.last_row(); ++row) {
+        CoveredSpan span;
+        if (rows.solve(row, span)) visit_span(span.row, span.first_column, span.count, span.e, rows.step());
+    }
+}
+
+/// Calls visit_span(row, first_column, count, e, step) for every row in
+/// [row_begin, row_end) where the triangle covers pixel centres, with e as in
+/// CoveredSpan and step[i] the change of e[i] per column.
+template <typename VisitSpan>
+void for_each_covered_span(const CoverageTriangle& t, int row_begin, int row_end, VisitSpan&& visit_span) {
+    const CoveredRows rows(t, row_begin, row_end);
+    if (rows.empty()) return;
+    if (!rows.tiny()) {
+        for_each_solved_span(rows, visit_span);
+        return;
+    }
+    CoveredSpan spans[2];
+    const int found = rows.tiny_spans(spans);
+    for (int s = 0; s < found; ++s) {
+        visit_span(spans[s].row, spans[s].first_column, spans[s].count, spans[s].e, rows.step());
     }
 }
 
