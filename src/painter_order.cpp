@@ -186,7 +186,8 @@ std::vector<std::uint32_t> farthest_first_order(const std::vector<double>& depth
         chunk_keys[i / kChunk].push_back(farthest_first_key(depth[i]));
     }
     PainterOrderMemory memory;
-    ProgressMonitor progress(nullptr);
+    const ProgressCallback no_reports;  // the monitor keeps a reference: it must outlive it
+    ProgressMonitor progress(no_reports);
     painter_order(chunk_drawn, chunk_keys, chunks, true, memory, progress);
     std::vector<std::uint32_t> order;
     for (const PaintRecord& record : memory.sorted) {

@@ -18,10 +18,12 @@ namespace phongrast::detail {
 class ProgressMonitor {
 public:
     /// `callback` may be empty: then every member is a cheap no-op and nothing is ever cancelled.
+    /// The monitor keeps a reference to it: `callback` must outlive the monitor (not a temporary).
     explicit ProgressMonitor(const ProgressCallback& callback)
         : callback_(callback), caller_(std::this_thread::get_id()), last_report_(std::chrono::steady_clock::now()) {
         if (enabled()) poll_ = [this] { poll(); };  // small enough for std::function's own storage: no allocation
     }
+    explicit ProgressMonitor(ProgressCallback&&) = delete;  // a temporary would die before the monitor
     ProgressMonitor(const ProgressMonitor&) = delete;
     ProgressMonitor& operator=(const ProgressMonitor&) = delete;
 
