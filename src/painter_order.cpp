@@ -70,48 +70,49 @@ void sort_bucket(PaintRecord* data, PaintRecord* scratch, std::size_t n, std::ui
     }
 }
 
-/// Calls visit(key, drawn) for every record of group `group`, in mesh order.
-template <typename Visit>
-void for_each_record(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
-                     const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, std::size_t group,
-                     Visit&& visit) {
-    const std::size_t end = std::min(chunks, (group + 1) * kGroupChunks);
-    for (std::size_t chunk = group * kGroupChunks; chunk < end; ++chunk) {
-        for (std::size_t i = 0; i < chunk_drawn[chunk].size(); ++i) visit(chunk_keys[chunk][i], chunk_drawn[chunk][i]);
+/// Set-up's records, chunk after chunk, in mesh order.
+struct SetupRecords {
+    const std::vector<std::vector<DrawnTriangle>>& chunk_drawn;
+    const std::vector<std::vector<std::uint64_t>>& chunk_keys;
+    std::size_t chunks;
+
+    std::size_t groups() const { return (chunks + kGroupChunks - 1) / kGroupChunks; }
+
+    /// Calls visit(key, drawn) for every record of group `group`, in mesh order.
+    template <typename Visit>
+    void for_each_in_group(std::size_t group, Visit&& visit) const {
+        const std::size_t end = std::min(chunks, (group + 1) * kGroupChunks);
+        for (std::size_t chunk = group * kGroupChunks; chunk < end; ++chunk) {
+            for (std::size_t i = 0; i < chunk_drawn[chunk].size(); ++i) visit(chunk_keys[chunk][i], chunk_drawn[chunk][i]);
+        }
     }
-}
+};
 
 /// No sort: the records in mesh order.
-void keep_mesh_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
-                     const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks,
-                     PainterOrderMemory& memory) {
+void keep_mesh_order(const SetupRecords& records, PainterOrderMemory& memory) {
     std::vector<std::size_t>& offsets = memory.chunk_offsets;
-    offsets.resize(chunks + 1);
+    offsets.resize(records.chunks + 1);
     offsets[0] = 0;
-    for (std::size_t chunk = 0; chunk < chunks; ++chunk) offsets[chunk + 1] = offsets[chunk] + chunk_drawn[chunk].size();
-    memory.sorted.resize(offsets[chunks]);
-    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+    for (std::size_t chunk = 0; chunk < records.chunks; ++chunk) {
+        offsets[chunk + 1] = offsets[chunk] + records.chunk_drawn[chunk].size();
+    }
+    memory.sorted.resize(offsets[records.chunks]);
+    tbb::parallel_for(std::size_t(0), records.chunks, [&](std::size_t chunk) {
         PaintRecord* out = memory.sorted.data() + offsets[chunk];
-        for (std::size_t i = 0; i < chunk_drawn[chunk].size(); ++i) out[i] = {chunk_keys[chunk][i], chunk_drawn[chunk][i]};
+        for (std::size_t i = 0; i < records.chunk_drawn[chunk].size(); ++i) {
+            out[i] = {records.chunk_keys[chunk][i], records.chunk_drawn[chunk][i]};
+        }
     });
 }
 
-}  // namespace
-
-void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
-                   const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
-                   PainterOrderMemory& memory, ProgressMonitor& progress) {
-    if (!sort) {
-        keep_mesh_order(chunk_drawn, chunk_keys, chunks, memory);
-        return;
-    }
-    const std::size_t groups = (chunks + kGroupChunks - 1) / kGroupChunks;
-    progress.begin_stage(0.35, 0.4, 3 * groups);
-    // The keys' range: the top-level digit starts at its highest differing bit.
+/// The top-level digit: the leading kDigitBits bits of the keys' range
+/// (relative to the smallest key, so no pass is spent on bits all share).
+Digit leading_digit(const SetupRecords& records, PainterOrderMemory& memory, ProgressMonitor& progress) {
+    const std::size_t groups = records.groups();
     memory.group_min.assign(groups, std::numeric_limits<std::uint64_t>::max());
     memory.group_max.assign(groups, 0);
     tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
-        for_each_record(chunk_drawn, chunk_keys, chunks, group, [&](std::uint64_t key, const DrawnTriangle&) {
+        records.for_each_in_group(group, [&](std::uint64_t key, const DrawnTriangle&) {
             memory.group_min[group] = std::min(memory.group_min[group], key);
             memory.group_max[group] = std::max(memory.group_max[group], key);
         });
@@ -119,18 +120,22 @@ void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
     });
     const std::uint64_t base = groups == 0 ? 0 : *std::min_element(memory.group_min.begin(), memory.group_min.end());
     const std::uint64_t top = groups == 0 ? 0 : *std::max_element(memory.group_max.begin(), memory.group_max.end());
-    const int shift = top > base ? bit_width(top - base) : 0;
-    const Digit digit(base, shift);
+    return Digit(base, top > base ? bit_width(top - base) : 0);
+}
 
-    // Counted per group, laid out bucket after bucket, each bucket group after group: a stable scatter.
+/// Scatters the records into memory.sorted by `digit`, stably: counted per
+/// group, laid out bucket after bucket and within a bucket group after
+/// group. memory.chunk_offsets gets the kBuckets + 1 bucket starts.
+void scatter_by_digit(const SetupRecords& records, const Digit& digit, PainterOrderMemory& memory,
+                      ProgressMonitor& progress) {
+    const std::size_t groups = records.groups();
     memory.group_counts.resize(groups);
     tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
         Counts& counts = memory.group_counts[group];
         counts.fill(0);
-        for_each_record(chunk_drawn, chunk_keys, chunks, group,
-                        [&](std::uint64_t key, const DrawnTriangle&) { ++counts[digit(key)]; });
+        records.for_each_in_group(group, [&](std::uint64_t key, const DrawnTriangle&) { ++counts[digit(key)]; });
     });
-    std::vector<std::size_t>& bucket_start = memory.chunk_offsets;  // reused: kBuckets + 1 offsets here
+    std::vector<std::size_t>& bucket_start = memory.chunk_offsets;
     bucket_start.assign(kBuckets + 1, 0);
     std::uint32_t total = 0;
     for (std::size_t b = 0; b < kBuckets; ++b) {
@@ -145,14 +150,18 @@ void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
     memory.sorted.resize(total);
     tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
         Counts& cursor = memory.group_counts[group];
-        for_each_record(chunk_drawn, chunk_keys, chunks, group, [&](std::uint64_t key, const DrawnTriangle& drawn) {
+        records.for_each_in_group(group, [&](std::uint64_t key, const DrawnTriangle& drawn) {
             memory.sorted[cursor[digit(key)]++] = {key, drawn};
         });
         progress.piece_done();
     });
+}
 
-    // The buckets are sorted in tasks of kTaskBuckets neighbours, each with
-    // scratch for its largest bucket: a small fraction of the records.
+/// Sorts each bucket of memory.sorted (starts in memory.chunk_offsets) on the
+/// bits below `digit`, in tasks of kTaskBuckets neighbours, each with
+/// scratch for its largest bucket: a small fraction of the records.
+void sort_buckets(const Digit& digit, PainterOrderMemory& memory, ProgressMonitor& progress) {
+    const std::vector<std::size_t>& bucket_start = memory.chunk_offsets;
     constexpr std::size_t kTasks = kBuckets / kTaskBuckets;
     std::size_t room = 0;
     for (std::size_t task = 0; task < kTasks; ++task) {
@@ -168,11 +177,27 @@ void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
         if (progress.cancelled()) return;
         PaintRecord* scratch = memory.scratch.data() + memory.task_scratch_start[task];
         for (std::size_t b = task * kTaskBuckets; b < (task + 1) * kTaskBuckets; ++b) {
-            sort_bucket(memory.sorted.data() + bucket_start[b], scratch, bucket_start[b + 1] - bucket_start[b], base,
-                        shift - digit.bits);
+            sort_bucket(memory.sorted.data() + bucket_start[b], scratch, bucket_start[b + 1] - bucket_start[b],
+                        digit.base, digit.shift - digit.bits);
         }
     });
-    for (std::size_t group = 0; group < groups; ++group) progress.piece_done();
+}
+
+}  // namespace
+
+void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
+                   const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
+                   PainterOrderMemory& memory, ProgressMonitor& progress) {
+    const SetupRecords records{chunk_drawn, chunk_keys, chunks};
+    if (!sort) {
+        keep_mesh_order(records, memory);
+        return;
+    }
+    progress.begin_stage(0.35, 0.4, 3 * records.groups());
+    const Digit digit = leading_digit(records, memory, progress);
+    scatter_by_digit(records, digit, memory, progress);
+    sort_buckets(digit, memory, progress);
+    for (std::size_t group = 0; group < records.groups(); ++group) progress.piece_done();
     progress.throw_if_cancelled();
 }
 

@@ -62,7 +62,7 @@ struct PainterOrderMemory {
     std::array<std::size_t, painter_sort::kBuckets> task_scratch_start{};  ///< per task of buckets: its scratch
     std::vector<painter_sort::Counts> group_counts;  ///< per group of set-up chunks: its records per bucket
     std::vector<std::uint64_t> group_min, group_max;  ///< per group: its smallest and largest key
-    std::vector<std::size_t> chunk_offsets;           ///< mesh order without sorting: where each chunk starts
+    std::vector<std::size_t> chunk_offsets;  ///< where each chunk starts in `sorted` (mesh order), or each bucket (sorting)
 };
 
 /// Puts the drawn triangles of the first `chunks` set-up chunks into
