@@ -95,8 +95,9 @@ int common_orientation(const Mesh& mesh) {
 // unmatched edge makes them differ except with probability about 2^-64 per
 // salt (two salts are used). This is O(triangles) and parallel, unlike
 // sorting the edges; with the eye's solid angle and the per-part volumes it
-// costs about 600 instructions per triangle (docs/performance.md: a third of
-// an 82k-triangle Gouraud render), paid on every render that asks to cull.
+// costs about 600 instructions per triangle (docs/performance.md, "Effect
+// sets": about a third of an 82k-triangle Gouraud render), paid on every
+// render that asks to cull.
 HiddenBackFaces find_hidden_back_faces(const Mesh& mesh, const glm::dvec3& eye) {
     if (mesh.triangles.empty()) return HiddenBackFaces::unknown;
     const Sums total = tbb::parallel_reduce(

@@ -14,7 +14,8 @@ namespace {
 /// Overdraw::automatic picks shade_visible only for per-sample lighting:
 /// there shading a sample costs several times the second coverage pass,
 /// while Gouraud's or flat's per-sample work (an interpolation, a store)
-/// costs about what the pass does (docs/performance.md, "Overdraw").
+/// costs about what the pass does (docs/performance.md, "Overdraw and
+/// instruction sets").
 bool overdraw_shades_visible_only(const Scene& scene, const RenderOptions& options, const EffectSet& effects) {
     switch (options.overdraw) {
         case Overdraw::shade_all: return false;
