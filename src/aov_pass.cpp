@@ -49,17 +49,9 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
         for (int k = 0; k < count; ++k) {
             const std::size_t index = row_start + static_cast<std::size_t>(first_column + k);
             out.covered[index] = 1;
-            // The fill's weights and depth for sample k, with the same operations as
-            // fill_samples() in fill_kernels.hpp, so that the depths compare equal.
-            Real w[3] = {q[0] + dq[0] * static_cast<Real>(k), q[1] + dq[1] * static_cast<Real>(k),
-                         q[2] + dq[2] * static_cast<Real>(k)};
-            Real fill_depth;
-            if constexpr (Perspective) {
-                fill_depth = Real(1) / (w[0] + w[1] + w[2]);
-                for (int i = 0; i < 3; ++i) w[i] *= fill_depth;
-            } else {
-                fill_depth = w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
-            }
+            // The fill's weights and depth for sample k (the same function), so that the depths compare equal.
+            Real w[3];
+            const Real fill_depth = sample_weights<Real, Perspective>(draw, q, dq, k, w);
             if (in.depth_buffer != nullptr && !(fill_depth == in.depth_buffer[index])) continue;
             if (planes.depth) {
                 // The surface's true depth: perspective-correct whatever the shading's weights.

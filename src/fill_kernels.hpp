@@ -60,6 +60,23 @@ inline void span_weights(const std::int64_t* e, const std::int64_t* step, Real i
     }
 }
 
+/// The interpolation weights w of sample k of a span (q and dq from
+/// span_weights()) and the sample's depth: perspective-correct weights are
+/// renormalised by their sum, whose inverse is the depth. The fill and the
+/// extra outputs' pass both use it, so their depths compare equal.
+template <typename Real, bool Perspective>
+PHONGRAST_FILL_INLINE Real sample_weights(const DrawTriangle<Real>& draw, const Real* q, const Real* dq, int k,
+                                          Real* w) {
+    for (int i = 0; i < 3; ++i) w[i] = q[i] + dq[i] * static_cast<Real>(k);
+    if constexpr (Perspective) {
+        const Real depth = Real(1) / (w[0] + w[1] + w[2]);
+        for (int i = 0; i < 3; ++i) w[i] *= depth;
+        return depth;
+    } else {
+        return w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
+    }
+}
+
 /// span_weights() for the kernels: dq is the same for every span of a
 /// triangle, so it is computed once, and the kernels set it up at the first
 /// covered span, so that the many tiny triangles that cover no sample pay
@@ -169,16 +186,8 @@ PHONGRAST_FILL_INLINE void fill_samples(const DrawTriangle<Real>& draw, FillTarg
         for (int k = 0; k < count; ++k) {
             // Painted over later: skipped. The weights below depend on k only, not on what was skipped.
             if (owners != nullptr && owners[first_column + k] != target.self) continue;
-            Real w[3] = {q[0] + dq[0] * static_cast<Real>(k), q[1] + dq[1] * static_cast<Real>(k),
-                         q[2] + dq[2] * static_cast<Real>(k)};
-            Real depth;
-            if constexpr (Perspective) {
-                // Weights linear in the triangle's plane: renormalise the depth-divided ones.
-                depth = Real(1) / (w[0] + w[1] + w[2]);
-                for (int i = 0; i < 3; ++i) w[i] *= depth;
-            } else {
-                depth = w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
-            }
+            Real w[3];
+            const Real depth = sample_weights<Real, Perspective>(draw, q, dq, k, w);
             const std::size_t index = row_start + static_cast<std::size_t>(first_column + k);
             if (target.depth_test) {
                 // <= lets a later triangle at equal depth win, as in painter's order.
