@@ -21,6 +21,18 @@ std::vector<std::uint32_t> reference_order(const std::vector<double>& depth) {
     return order;
 }
 
+/// n depths uniform in [low, high), every `stride`-th one then set to the
+/// one at index i / `back` before it: exact ties among close values.
+std::vector<double> close_depths_with_ties(unsigned seed, double low, double high, std::size_t n, std::size_t stride,
+                                           std::size_t back) {
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> spread(low, high);
+    std::vector<double> depth(n);
+    for (double& d : depth) d = spread(random);
+    for (std::size_t i = 0; i < depth.size(); i += stride) depth[i] = depth[i / back];
+    return depth;
+}
+
 }  // namespace
 
 TEST_CASE("radix painter's order equals a stable sort, ties in mesh order") {
@@ -49,11 +61,7 @@ TEST_CASE("radix painter's order equals a stable sort, ties in mesh order") {
 
 TEST_CASE("radix painter's order of depths sharing their high bits") {
     // Depths in [7, 7.001): sign, exponent and leading mantissa bits equal, so passes are skipped.
-    std::mt19937_64 random(9);
-    std::uniform_real_distribution<double> spread(7.0, 7.001);
-    std::vector<double> depth(20000);
-    for (double& d : depth) d = spread(random);
-    for (std::size_t i = 0; i < depth.size(); i += 7) depth[i] = depth[i / 2];
+    const std::vector<double> depth = close_depths_with_ties(9, 7.0, 7.001, 20000, 7, 2);
     CHECK(farthest_first_order(depth) == reference_order(depth));
 }
 
@@ -61,11 +69,7 @@ TEST_CASE("painter's order when most depths fall into one leading-bits bucket") 
     // One far outlier stretches the keys' range, so the leading bits put
     // nearly every other depth into one bucket, too large to sort in cache:
     // it is split again by the next bits. Ties and nearby values throughout.
-    std::mt19937_64 random(10);
-    std::uniform_real_distribution<double> spread(2.0, 2.0001);
-    std::vector<double> depth(60000);
-    for (double& d : depth) d = spread(random);
-    for (std::size_t i = 0; i < depth.size(); i += 5) depth[i] = depth[i / 3];
+    std::vector<double> depth = close_depths_with_ties(10, 2.0, 2.0001, 60000, 5, 3);
     depth[12345] = 1e12;
     depth[23456] = -1e12;
     CHECK(farthest_first_order(depth) == reference_order(depth));
