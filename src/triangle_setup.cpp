@@ -145,16 +145,17 @@ private:
         DrawTriangle<Real> draw;
         int order[3];
         if (!set_up_piece(corner, centroid, draw, outcome, order)) return outcome;
-        if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid &&
-            same_lit_) {
-            counts_.lit_points += 3;  // lit like the corners below, to the colour every point gets
-        } else if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid) {
-            // Lit copies of the corners: light_corners() writes their `lit`, the mesh's vertices stay as they are.
-            // (Exact vectors: set_up_piece() copied the `lit` light_vertices() gave each vertex.)
-            Varyings<Real> copies[3] = {*draw.v[0], *draw.v[1], *draw.v[2]};
-            Varyings<Real>* corners[3] = {&copies[0], &copies[1], &copies[2]};
-            counts_.lit_points += light_corners(corners, centroid);
-            for (int i = 0; i < 3; ++i) draw.lit[i] = copies[i].lit;
+        // Exact vectors: set_up_piece() copied the `lit` light_vertices() gave each vertex.
+        if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid) {
+            if (same_lit_) {
+                counts_.lit_points += 3;  // lit like the corners below, to the colour set_up_piece() wrote
+            } else {
+                // Lit copies of the corners: light_corners() writes their `lit`, the mesh's vertices stay as they are.
+                Varyings<Real> copies[3] = {*draw.v[0], *draw.v[1], *draw.v[2]};
+                Varyings<Real>* corners[3] = {&copies[0], &copies[1], &copies[2]};
+                counts_.lit_points += light_corners(corners, centroid);
+                for (int i = 0; i < 3; ++i) draw.lit[i] = copies[i].lit;
+            }
         }
         out_.push_back(draw);
         return outcome;
