@@ -39,13 +39,15 @@ std::string summary_line(const RenderStats& stats, double seconds, double load_s
     char buffer[576];
     std::snprintf(buffer, sizeof buffer,
                   "%llu triangles in, %llu drawn, %llu dropped, %llu clipped, %llu culled, %llu outside the view, "
-                  "%llu between samples, %llu degenerate; %llu samples covered, %llu shaded; %srender %.2f ms",
+                  "%llu out of range, %llu between samples, %llu degenerate; "
+                  "%llu samples covered, %llu shaded; %srender %.2f ms",
                   static_cast<unsigned long long>(stats.triangles_in),
                   static_cast<unsigned long long>(stats.triangles_drawn),
                   static_cast<unsigned long long>(stats.triangles_dropped),
                   static_cast<unsigned long long>(stats.triangles_clipped),
                   static_cast<unsigned long long>(stats.triangles_culled),
                   static_cast<unsigned long long>(stats.triangles_outside),
+                  static_cast<unsigned long long>(stats.triangles_out_of_range),
                   static_cast<unsigned long long>(stats.triangles_between_samples),
                   static_cast<unsigned long long>(stats.triangles_degenerate),
                   static_cast<unsigned long long>(stats.samples_covered),

@@ -66,8 +66,14 @@ inline void render_small(const phongrast::Mesh& mesh, const phongrast::Scene* gi
 /// another exception type, a non-finite pixel -- is a finding.
 template <class Reader>
 int fuzz_mesh_reader(const std::uint8_t* data, std::size_t size, const char* extension, Reader read) {
-    static const std::string path =
-        "/tmp/phongrast_fuzz_" + std::to_string(getpid()) + "_" + std::string(extension + 1) + std::string(extension);
+    // The process id zero-padded to a fixed width: error messages quote the
+    // path, and a path of another length would take other branches in the
+    // string code, so the same seed would fuzz other inputs on another run.
+    static const std::string path = [extension] {
+        char pid[16];
+        std::snprintf(pid, sizeof pid, "%010ld", static_cast<long>(getpid()));
+        return "/tmp/phongrast_fuzz_" + std::string(pid) + "_" + std::string(extension + 1) + std::string(extension);
+    }();
     if (!write_file(path, data, size)) return 0;
     try {
         render_small(read(path).mesh);

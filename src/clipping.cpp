@@ -84,9 +84,10 @@ bool clip_to_guard_band(ClipPolygon<Real>& polygon, const View& view, bool persp
 }  // namespace
 
 template <typename Real>
-bool clip_to_view(ClipPolygon<Real>& polygon, const View& view, bool perspective) {
-    return clip_to_near_plane(polygon, view) && representable(polygon) &&
-           clip_to_guard_band(polygon, view, perspective);
+ClipOutcome clip_to_view(ClipPolygon<Real>& polygon, const View& view, bool perspective) {
+    if (!clip_to_near_plane(polygon, view)) return ClipOutcome::empty;
+    if (!representable(polygon)) return ClipOutcome::out_of_range;
+    return clip_to_guard_band(polygon, view, perspective) ? ClipOutcome::kept : ClipOutcome::empty;
 }
 
 // Separating axes: the rectangle's two and the polygon's edges, each with
@@ -121,8 +122,8 @@ bool meets_image(const ClipPolygon<Real>& polygon, int rows, int columns) {
     return true;
 }
 
-template bool clip_to_view<float>(ClipPolygon<float>&, const View&, bool);
-template bool clip_to_view<double>(ClipPolygon<double>&, const View&, bool);
+template ClipOutcome clip_to_view<float>(ClipPolygon<float>&, const View&, bool);
+template ClipOutcome clip_to_view<double>(ClipPolygon<double>&, const View&, bool);
 template bool meets_image<float>(const ClipPolygon<float>&, int, int);
 template bool meets_image<double>(const ClipPolygon<double>&, int, int);
 

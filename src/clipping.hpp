@@ -71,18 +71,34 @@ void clip_against(const ClipPolygon<Real>& in, ClipPolygon<Real>& out, Distance&
     }
 }
 
+/// The farthest z_c in front of the eye a triangle's corner may have to be
+/// drawn in Real (set-up skips the triangle otherwise). The fill's
+/// perspective weights are (edge weight) / z_c, summed and inverted: up to
+/// 1e30 those stay normal floats and their inverse finite (float's largest
+/// value is 3.4e38, its smallest normal 1.2e-38); double has the same margin
+/// at 1e300.
+template <typename Real>
+inline constexpr double kMaxDrawableDepth = 1e300;
+template <>
+inline constexpr double kMaxDrawableDepth<float> = 1e30;
+
 /// Projected coordinates up to this size are clipped exactly (differences of
 /// two of them stay finite); beyond it only overflow can have produced them.
 constexpr double kMaxClippableProjection = 1e306;
 
+enum class ClipOutcome {
+    kept,          ///< `polygon` holds what is left, at least a triangle
+    empty,         ///< nothing is left
+    out_of_range,  ///< a corner cannot be represented (a coordinate overflowed on the way here)
+};
+
 /// Clips `polygon` to the near plane, then to the guard band around the
 /// image (raster.hpp's kGuardBandPixels). Attributes are interpolated in
 /// screen space, or at the matching 3D parameter when `perspective`.
-/// Returns false when nothing is left, or when a corner cannot be
-/// represented (a coordinate overflowed on the way here): the triangle is
-/// then skipped rather than fed to the fixed-point snapping.
+/// A corner out of range makes the triangle skipped rather than fed to the
+/// fixed-point snapping.
 template <typename Real>
-bool clip_to_view(ClipPolygon<Real>& polygon, const View& view, bool perspective);
+ClipOutcome clip_to_view(ClipPolygon<Real>& polygon, const View& view, bool perspective);
 
 /// Whether a convex polygon (sample coordinates) overlaps the image
 /// rectangle [0, columns] x [0, rows].

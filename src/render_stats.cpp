@@ -14,6 +14,7 @@ const std::vector<RenderCounter>& render_counters() {
         {"triangles_dropped", &RenderStats::triangles_dropped, true},
         {"triangles_clipped", &RenderStats::triangles_clipped, true},
         {"triangles_outside", &RenderStats::triangles_outside, true},
+        {"triangles_out_of_range", &RenderStats::triangles_out_of_range, true},
         {"triangles_between_samples", &RenderStats::triangles_between_samples, true},
         {"triangles_drawn", &RenderStats::triangles_drawn, true},
         {"triangles_sorted", &RenderStats::triangles_sorted, true},

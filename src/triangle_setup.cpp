@@ -56,18 +56,26 @@ public:
             ++counts_.dropped;
             return;
         }
+        const std::vector<ScreenVertex>& screen = vertices_.screen;
+        if (!within_drawable_depth(screen[tri[0]]) || !within_drawable_depth(screen[tri[1]]) ||
+            !within_drawable_depth(screen[tri[2]])) {
+            ++counts_.out_of_range;
+            return;
+        }
         const Vec3<Real> centroid = centroid_if_lit_there(tri);
         const std::size_t first_draw = out_.size();
         const double near_depth = in_.view.near_depth;
-        const std::vector<ScreenVertex>& screen = vertices_.screen;
         const bool whole = inside_image && screen[tri[0]].depth >= near_depth && screen[tri[1]].depth >= near_depth &&
                            screen[tri[2]].depth >= near_depth;
         PiecesOutcome outcome;
         if (whole) {
             outcome = set_up_whole(tri, centroid);
-        } else if (!set_up_clipped(tri, centroid, inside_image, outcome)) {
-            ++counts_.outside;  // nothing left after clipping
-            return;
+        } else {
+            const ClipOutcome clipped = set_up_clipped(tri, centroid, inside_image, outcome);
+            if (clipped != ClipOutcome::kept) {
+                ++(clipped == ClipOutcome::empty ? counts_.outside : counts_.out_of_range);
+                return;
+            }
         }
         if (outcome.drawn && in_.scene.shader == Shader::flat) {
             // Lit only once something is to be drawn: clipped-away and
@@ -162,8 +170,9 @@ private:
     }
 
     // A triangle crossing the image border or the near plane: clipped to a
-    // polygon, drawn as a fan. Returns false when clipping leaves nothing.
-    bool set_up_clipped(const Triangle& tri, const Vec3<Real>& centroid, bool inside_image, PiecesOutcome& outcome) {
+    // polygon, drawn as a fan, unless clipping leaves nothing or meets a corner out of range.
+    ClipOutcome set_up_clipped(const Triangle& tri, const Vec3<Real>& centroid, bool inside_image,
+                               PiecesOutcome& outcome) {
         ClipPolygon<Real> polygon;
         polygon.count = 3;
         for (int i = 0; i < 3; ++i) {
@@ -181,13 +190,24 @@ private:
             counts_.lit_points += light_corners(corners, centroid);
         }
         const bool perspective = in_.options.interpolation == Interpolation::perspective_correct;
-        if (!clip_to_view(polygon, in_.view, perspective)) return false;
+        const ClipOutcome clipped = clip_to_view(polygon, in_.view, perspective);
+        if (clipped != ClipOutcome::kept) return clipped;
         draw_fan(polygon, centroid, outcome);
         if (!inside_image) ++counts_.clipped;
         if (!outcome.drawn && outcome.has_area) {
             outcome.meets_image = meets_image(polygon, in_.view.frame.rows, in_.view.frame.columns);
         }
-        return true;
+        return ClipOutcome::kept;
+    }
+
+    /// Whether a corner's depth can be drawn in Real: the fill weights each
+    /// corner by 1/z_c and divides by their sum, so beyond kMaxDrawableDepth
+    /// those weights underflow and the sum's inverse overflows (in float, a
+    /// depth past 3.4e38 is infinite outright), and the pixels would be NaN.
+    /// Corners behind the near plane are the clipping's to judge. A NaN depth
+    /// (a position whose transform overflowed) is out of range too.
+    static bool within_drawable_depth(const ScreenVertex& corner) {
+        return corner.depth <= kMaxDrawableDepth<Real> || corner.depth < 0.0;
     }
 
     void draw_fan(const ClipPolygon<Real>& polygon, const Vec3<Real>& centroid, PiecesOutcome& outcome) {
@@ -273,6 +293,7 @@ void add_counts(const SetupCounts& counts, RenderStats& stats) {
     stats.triangles_dropped += counts.dropped;
     stats.triangles_clipped += counts.clipped;
     stats.triangles_outside += counts.outside;
+    stats.triangles_out_of_range += counts.out_of_range;
     stats.triangles_between_samples += counts.between_samples;
     stats.triangles_degenerate += counts.degenerate;
     stats.triangles_drawn += counts.drawn;

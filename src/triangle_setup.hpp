@@ -40,7 +40,8 @@ private:
 /// exactly one of culled, dropped, outside, between_samples, degenerate and
 /// drawn; clipped counts those of them that were clipped.
 struct SetupCounts {
-    std::uint64_t culled = 0, dropped = 0, clipped = 0, outside = 0, between_samples = 0, degenerate = 0, drawn = 0;
+    std::uint64_t culled = 0, dropped = 0, clipped = 0, outside = 0, out_of_range = 0, between_samples = 0,
+                  degenerate = 0, drawn = 0;
     std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during set-up
 };
 

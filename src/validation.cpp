@@ -1,6 +1,8 @@
 #include "validation.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -15,6 +17,23 @@
 namespace phongrast {
 namespace detail {
 namespace {
+
+/// The smallest i in [0, n) for which bad(i) holds, or n: the same answer as
+/// a loop from 0, found in parallel over blocks (large meshes are checked
+/// on every render).
+template <typename Bad>
+std::size_t first_bad(std::size_t n, const Bad& bad) {
+    constexpr std::size_t kBlock = 65536;
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, kBlock), n,
+        [&](const tbb::blocked_range<std::size_t>& range, std::size_t found) {
+            for (std::size_t i = range.begin(); i < range.end() && i < found; ++i) {
+                if (bad(i)) return i;
+            }
+            return found;
+        },
+        [](std::size_t a, std::size_t b) { return std::min(a, b); });
+}
 
 void require_finite(const glm::vec3& value, const char* field) {
     if (!all_finite(value)) throw std::invalid_argument(std::string(field) + ": expected finite numbers");
@@ -63,48 +82,63 @@ void validate_options_and_size(const Scene& scene, const RenderOptions& options)
     }
 }
 
+/// Short decimal form of a magnitude for messages ("2e+38", not 39 digits).
+std::string short_number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+/// How far the selected terms can light a channel: |I| <= |c| * per_colour +
+/// fixed, since the dot products and max(0, R.V)^n are at most 1. In double,
+/// so the bound itself cannot overflow.
+struct LitBound {
+    glm::dvec3 per_colour{0.0};  ///< |ka Ia| + sum over lights of |kd Ip|
+    glm::dvec3 fixed{0.0};       ///< sum over lights of |ks Ip| (specular does not scale with c)
+};
+
+LitBound lit_bound(const Scene& scene) {
+    const PhongMaterial& m = scene.material;
+    LitBound bound;
+    if (scene.lighting.ambient) bound.per_colour += glm::abs(glm::dvec3(m.ka) * glm::dvec3(scene.ambient));
+    for (const PointLight& light : scene.lights) {
+        const glm::dvec3 intensity = glm::abs(glm::dvec3(light.intensity));
+        if (scene.lighting.diffuse) bound.per_colour += intensity * glm::abs(glm::dvec3(m.kd));
+        if (scene.lighting.specular) bound.fixed += intensity * glm::abs(glm::dvec3(m.ks));
+    }
+    return bound;
+}
+
+double largest(const glm::dvec3& v) { return std::max({v.x, v.y, v.z}); }
+
+/// Rejects scenes whose lit values could pass kMaxLitValue (validation.hpp)
+/// whatever the mesh colours; returns the largest |colour| per channel a
+/// vertex may have, which validate_mesh() then checks vertex by vertex.
+glm::dvec3 colour_limit(const LitBound& bound, bool white_surface) {
+    if (largest(bound.fixed) > kMaxLitValue) {
+        throw std::invalid_argument("lights: the specular term (ks x intensity, summed over the lights) could reach " +
+                                    short_number(largest(bound.fixed)) + ", expected at most " +
+                                    short_number(kMaxLitValue) + "; scale ks or the light intensities down");
+    }
+    if (white_surface && largest(bound.per_colour + bound.fixed) > kMaxLitValue) {
+        throw std::invalid_argument("material and lights: a white surface could be lit to " +
+                                    short_number(largest(bound.per_colour + bound.fixed)) + ", expected at most " +
+                                    short_number(kMaxLitValue) +
+                                    "; scale ka, kd, the ambient or the light intensities down");
+    }
+    glm::dvec3 limit;
+    for (int channel = 0; channel < 3; ++channel) {
+        limit[channel] = bound.per_colour[channel] > 0.0
+                             ? (kMaxLitValue - bound.fixed[channel]) / bound.per_colour[channel]
+                             : std::numeric_limits<double>::infinity();
+    }
+    return limit;
+}
+
 }  // namespace
 
-void validate_camera(const Camera& camera) {
-    if (!all_finite(camera.eye)) throw std::invalid_argument("camera.eye: expected finite numbers");
-    if (!all_finite(camera.lookat)) throw std::invalid_argument("camera.lookat: expected finite numbers");
-    if (!all_finite(camera.up)) throw std::invalid_argument("camera.up: expected finite numbers");
-    require_positive_finite(camera.focal, "focal");
-    require_positive_finite(camera.sensor_height, "sensor[0] (height)");
-    require_positive_finite(camera.sensor_width, "sensor[1] (width)");
-}
-
-void validate_render_request(const Scene& scene, const RenderOptions& options) {
-    validate_material_and_lights(scene);
-    validate_mesh(scene.mesh);
-    validate_options_and_size(scene, options);
-    validate_camera(scene.camera);
-}
-
-}  // namespace detail
-
-namespace {
-
-/// The smallest i in [0, n) for which bad(i) holds, or n: the same answer as
-/// a loop from 0, found in parallel over blocks (large meshes are checked
-/// on every render).
-template <typename Bad>
-std::size_t first_bad(std::size_t n, const Bad& bad) {
-    constexpr std::size_t kBlock = 65536;
-    return tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, n, kBlock), n,
-        [&](const tbb::blocked_range<std::size_t>& range, std::size_t found) {
-            for (std::size_t i = range.begin(); i < range.end() && i < found; ++i) {
-                if (bad(i)) return i;
-            }
-            return found;
-        },
-        [](std::size_t a, std::size_t b) { return std::min(a, b); });
-}
-
-}  // namespace
-
-void validate_mesh(const Mesh& mesh) {
+void validate_mesh(const Mesh& mesh, const glm::dvec3& colour_limit,
+                   const std::function<double(const glm::vec3&)>& lit_value) {
     const std::string vertices = std::to_string(mesh.positions.size());
     const std::size_t bad_position =
         first_bad(mesh.positions.size(), [&](std::size_t i) { return !detail::all_finite(mesh.positions[i]); });
@@ -115,16 +149,27 @@ void validate_mesh(const Mesh& mesh) {
         throw std::invalid_argument("mesh: " + std::to_string(mesh.colors.size()) + " colours for " + vertices +
                                     " vertices (expected one per vertex, or none)");
     }
-    const std::size_t bad_color =
-        first_bad(mesh.colors.size(), [&](std::size_t i) { return !detail::all_finite(mesh.colors[i]); });
+    // Finite and within the limit in one pass (a NaN fails the comparison).
+    const std::size_t bad_color = first_bad(mesh.colors.size(), [&](std::size_t i) {
+        const glm::vec3& c = mesh.colors[i];
+        return !(std::abs(double(c.x)) <= colour_limit.x && std::abs(double(c.y)) <= colour_limit.y &&
+                 std::abs(double(c.z)) <= colour_limit.z) ||
+               !detail::all_finite(c);
+    });
     if (bad_color < mesh.colors.size()) {
-        throw std::invalid_argument("mesh: colour of vertex " + std::to_string(bad_color) + " is not finite");
+        const glm::vec3& c = mesh.colors[bad_color];
+        const std::string vertex = "mesh: colour of vertex " + std::to_string(bad_color);
+        if (!detail::all_finite(c)) throw std::invalid_argument(vertex + " is not finite");
+        throw std::invalid_argument(vertex + " (" + short_number(c.x) + ", " + short_number(c.y) + ", " +
+                                    short_number(c.z) + ") could be lit to " + short_number(lit_value(c)) +
+                                    ", expected at most " + short_number(kMaxLitValue) +
+                                    "; scale the colours, ka, kd or the light intensities down");
     }
     if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) {
         throw std::invalid_argument("mesh: " + std::to_string(mesh.normals.size()) + " normals for " + vertices +
                                     " vertices (expected one per vertex, or none)");
     }
-    if (mesh.triangles.size() > detail::DrawnTriangle::kMaxTriangles) {
+    if (mesh.triangles.size() > DrawnTriangle::kMaxTriangles) {
         throw std::invalid_argument("mesh: " + std::to_string(mesh.triangles.size()) + " triangles, expected at most " +
                                     std::to_string(detail::DrawnTriangle::kMaxTriangles));
     }
@@ -139,6 +184,32 @@ void validate_mesh(const Mesh& mesh) {
                                         std::to_string(index) + ", expected below " + vertices);
         }
     }
+}
+
+void validate_camera(const Camera& camera) {
+    if (!all_finite(camera.eye)) throw std::invalid_argument("camera.eye: expected finite numbers");
+    if (!all_finite(camera.lookat)) throw std::invalid_argument("camera.lookat: expected finite numbers");
+    if (!all_finite(camera.up)) throw std::invalid_argument("camera.up: expected finite numbers");
+    require_positive_finite(camera.focal, "focal");
+    require_positive_finite(camera.sensor_height, "sensor[0] (height)");
+    require_positive_finite(camera.sensor_width, "sensor[1] (width)");
+}
+
+void validate_render_request(const Scene& scene, const RenderOptions& options) {
+    validate_material_and_lights(scene);
+    const LitBound bound = lit_bound(scene);
+    validate_mesh(scene.mesh, colour_limit(bound, scene.mesh.colors.empty()), [&](const glm::vec3& colour) {
+        return largest(glm::abs(glm::dvec3(colour)) * bound.per_colour + bound.fixed);
+    });
+    validate_options_and_size(scene, options);
+    validate_camera(scene.camera);
+}
+
+}  // namespace detail
+
+void validate_mesh(const Mesh& mesh) {
+    const double any = std::numeric_limits<double>::infinity();
+    detail::validate_mesh(mesh, glm::dvec3(any), [](const glm::vec3&) { return 0.0; });
 }
 
 }  // namespace phongrast

@@ -47,7 +47,7 @@ TEST_CASE("a triangle inside the view is left as it is") {
     ClipPolygon<float> polygon = triangle(corner(view, -0.2, -0.2, 1.0), corner(view, 0.2, -0.2, 1.0),
                                           corner(view, 0.0, 0.2, 1.0));
     const ClipPolygon<float> before = polygon;
-    REQUIRE(phongrast::detail::clip_to_view(polygon, view, true));
+    REQUIRE(phongrast::detail::clip_to_view(polygon, view, true) == phongrast::detail::ClipOutcome::kept);
     REQUIRE(polygon.count == 3);
     for (std::size_t i = 0; i < 3; ++i) {
         CHECK(polygon.vertices[i].column == before.vertices[i].column);
@@ -60,7 +60,7 @@ TEST_CASE("the near plane cuts a triangle with one corner behind the eye into a 
     const View view = test_view();
     ClipPolygon<float> polygon = triangle(corner(view, -0.2, 0.0, 1.0), corner(view, 0.2, 0.0, 1.0),
                                           corner(view, 0.0, 0.0, -1.0));
-    REQUIRE(phongrast::detail::clip_to_view(polygon, view, true));
+    REQUIRE(phongrast::detail::clip_to_view(polygon, view, true) == phongrast::detail::ClipOutcome::kept);
     REQUIRE(polygon.count == 4);
     for (std::size_t i = 0; i < polygon.count; ++i) {
         const ClipVertex<float>& v = polygon.vertices[i];
@@ -75,7 +75,7 @@ TEST_CASE("a triangle wholly behind the near plane leaves nothing") {
     const View view = test_view();
     ClipPolygon<float> polygon = triangle(corner(view, -0.2, 0.0, -1.0), corner(view, 0.2, 0.0, -1.0),
                                           corner(view, 0.0, 0.2, -2.0));
-    CHECK_FALSE(phongrast::detail::clip_to_view(polygon, view, true));
+    CHECK(phongrast::detail::clip_to_view(polygon, view, true) == phongrast::detail::ClipOutcome::empty);
 }
 
 TEST_CASE("neighbours clipped at the near plane create bit-identical corners on their shared edge") {
@@ -83,8 +83,8 @@ TEST_CASE("neighbours clipped at the near plane create bit-identical corners on 
     const ClipVertex<float> front = corner(view, 0.1, 0.05, 2.0), behind = corner(view, -0.1, 0.02, -0.5);
     ClipPolygon<float> left = triangle(front, behind, corner(view, -0.3, 0.3, 1.5));
     ClipPolygon<float> right = triangle(behind, front, corner(view, 0.3, -0.3, 1.0));
-    REQUIRE(phongrast::detail::clip_to_view(left, view, true));
-    REQUIRE(phongrast::detail::clip_to_view(right, view, true));
+    REQUIRE(phongrast::detail::clip_to_view(left, view, true) == phongrast::detail::ClipOutcome::kept);
+    REQUIRE(phongrast::detail::clip_to_view(right, view, true) == phongrast::detail::ClipOutcome::kept);
     // Of the new corners (in front of 1.0), exactly one is on the shared edge: the same bits in both.
     int shared = 0;
     for (std::size_t i = 0; i < left.count; ++i) {
@@ -109,7 +109,7 @@ TEST_CASE("corners beyond the guard band are clipped to it, in both screen-space
         b.column = far, b.row = 20.0, b.depth = 3.0;
         c.column = 30.0, c.row = 40.0;
         ClipPolygon<float> polygon = triangle(a, b, c);
-        REQUIRE(phongrast::detail::clip_to_view(polygon, view, perspective));
+        REQUIRE(phongrast::detail::clip_to_view(polygon, view, perspective) == phongrast::detail::ClipOutcome::kept);
         CHECK(polygon.count == 4);
         for (std::size_t i = 0; i < polygon.count; ++i) {
             const ClipVertex<float>& v = polygon.vertices[i];
@@ -126,7 +126,7 @@ TEST_CASE("a corner that overflowed is not clipped but skipped") {
     b.column = 2.0 * phongrast::detail::kMaxClippableProjection;
     c.row = std::numeric_limits<double>::infinity();
     ClipPolygon<float> polygon = triangle(a, b, c);
-    CHECK_FALSE(phongrast::detail::clip_to_view(polygon, view, true));
+    CHECK(phongrast::detail::clip_to_view(polygon, view, true) == phongrast::detail::ClipOutcome::out_of_range);
 }
 
 TEST_CASE("meets_image tells polygons over the image from those beside it") {

@@ -40,8 +40,7 @@ RenderResult render_kernel(const Scene& scene, RenderOptions options, bool speci
 // Every way a triangle can leave setup is counted exactly once.
 std::uint64_t accounted(const RenderStats& s) {
     return s.triangles_culled + s.triangles_degenerate + s.triangles_dropped + s.triangles_outside +
-           s.triangles_between_samples +
-           s.triangles_drawn;
+           s.triangles_out_of_range + s.triangles_between_samples + s.triangles_drawn;
 }
 
 // The mesh's triangles that face away from the eye, by the right-hand rule

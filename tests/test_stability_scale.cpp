@@ -160,3 +160,35 @@ TEST_CASE("projected coordinates of 1e9 pixels and beyond: clipped to the guard 
     CHECK(result.image.at(15, 63) == stability::kWhite);  // the sliver still spans 10 rows at the right border
     CHECK(result.image.at(5, 63) == stability::kBackground);
 }
+
+TEST_CASE("scaled by 1e29, just inside float's drawable depth: the unscaled picture") {
+    check_same_picture(1e29, glm::dvec3(0.0), "x 1e29");
+}
+
+TEST_CASE("scaled by 1e31, beyond float's drawable depth: float skips every triangle, double draws the picture") {
+    // Float weighs each corner by 1/z_c; past 1e30 (kMaxDrawableDepth) those
+    // weights and their sum leave float's normal range and pixels would be NaN.
+    for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+        const Scene reference_scene = base_scene(shader);
+        const Scene far = transformed(reference_scene, 1e31, glm::dvec3(0.0));
+        RenderOptions single = RenderOptions::exact();
+        single.precision = Precision::single_float;
+        const RenderResult skipped = render(far, single);
+        INFO(to_string(shader));
+        STABILITY_CHECK_FINITE(skipped);
+        CHECK(skipped.stats.triangles_out_of_range == far.mesh.triangles.size());
+        CHECK(skipped.stats.triangles_drawn == 0);
+        for (const glm::vec3& p : skipped.image.pixels) REQUIRE(p == far.image.background);
+
+        RenderOptions twice = RenderOptions::exact();
+        twice.precision = Precision::double_float;
+        const RenderResult reference = render(reference_scene, twice);
+        const RenderResult drawn = render(far, twice);
+        STABILITY_CHECK_FINITE(drawn);
+        CHECK(drawn.stats.triangles_out_of_range == 0);
+        const Comparison c = compare(reference.image, drawn.image, reference_scene.image.background);
+        REQUIRE(c.covered > 2000);
+        CHECK(c.coverage_flips * 200 <= c.covered);
+        CHECK(c.worst <= 1e-4f);
+    }
+}

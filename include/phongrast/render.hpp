@@ -149,6 +149,10 @@ struct RenderStats {
     std::uint64_t triangles_dropped = 0;     ///< seed border rule: a vertex outside the image or behind the eye
     std::uint64_t triangles_clipped = 0;     ///< crossed the image border or the near plane and were clipped
     std::uint64_t triangles_outside = 0;     ///< entirely outside the view: nothing to draw
+    /// A corner beyond what the render's precision can draw, skipped whole: in
+    /// front of the eye farther than 1e30 (single precision; 1e300 in double),
+    /// or, clipped at the near plane, projected beyond 1e306 sample widths.
+    std::uint64_t triangles_out_of_range = 0;
     std::uint64_t triangles_between_samples = 0;  ///< in the view, but no sample centre inside (smaller than the sample spacing)
     std::uint64_t triangles_drawn = 0;       ///< reached the fill (possibly as several clipped pieces)
     std::uint64_t triangles_sorted = 0;      ///< drawn triangles put into painter's order: 0 when every covered

@@ -19,7 +19,7 @@ def test_the_default_scene_equals_the_phongrast_command(tmp_path):
     assert_same_bits(image, phongrast.read_image(str(tmp_path / "cpp.exr")))
     assert stats["triangles_in"] == scene.mesh.triangle_count > 0
     assert stats["triangles_drawn"] + stats["triangles_culled"] + stats["triangles_outside"] + \
-        stats["triangles_between_samples"] + stats["triangles_degenerate"] + stats["triangles_dropped"] == stats["triangles_in"]
+        stats["triangles_out_of_range"] + stats["triangles_between_samples"] + stats["triangles_degenerate"] + stats["triangles_dropped"] == stats["triangles_in"]
     assert stats["samples_covered"] > 0 and stats["seconds"] > 0 and stats["nonfinite_values_replaced"] == 0
 
 
