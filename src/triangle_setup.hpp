@@ -37,8 +37,8 @@ private:
 };
 
 /// What set-up did with the triangles of one chunk: each triangle lands in
-/// exactly one of culled, dropped, outside, between_samples, degenerate and
-/// drawn; clipped counts those of them that were clipped.
+/// exactly one of culled, dropped, outside, out_of_range, between_samples,
+/// degenerate and drawn; clipped counts those of them that were clipped.
 struct SetupCounts {
     std::uint64_t culled = 0, dropped = 0, clipped = 0, outside = 0, out_of_range = 0, between_samples = 0,
                   degenerate = 0, drawn = 0;
