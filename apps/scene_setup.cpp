@@ -113,6 +113,17 @@ NormalOptions normal_options(const SceneFlags& flags) {
     return options;
 }
 
+/// The checks render() makes, before any work, naming where the scene came
+/// from: some values are only wrong together (colours, material and lights
+/// that could light a pixel past 1e30), so no reader can name them alone.
+void validate_prepared(const PreparedScene& prepared, const std::string& source) {
+    try {
+        validate_render(prepared.scene, prepared.options);
+    } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument(source + ": " + error.what());
+    }
+}
+
 /// Shader, lighting and camera overrides, the camera check, and the options.
 void apply_flags(PreparedScene& prepared, const SceneFlags& flags, const Messages& messages) {
     Scene& scene = prepared.scene;
@@ -187,6 +198,7 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         prepared.name = fs::path(input).stem().string();
     }
     apply_flags(prepared, flags, messages);
+    validate_prepared(prepared, input.empty() ? mesh_path : input + " (mesh " + mesh_path + ")");
 
     if (auto_framed && !messages.quiet()) {
         std::ostringstream normal_flags;
@@ -205,6 +217,7 @@ PreparedScene prepare_parsed_scene(io::SceneFile file, const std::string& name, 
     prepared.scene = scene_from_file(std::move(file), name, "", flags, messages, prepared.load_seconds);
     prepared.name = name;
     apply_flags(prepared, flags, messages);
+    validate_prepared(prepared, name);
     return prepared;
 }
 

@@ -95,6 +95,11 @@ const RenderResult& Renderer::render(const Scene& scene) {
     return state_->result;
 }
 
+void validate_render(const Scene& scene, const RenderOptions& options) {
+    detail::validate_render_request(scene, options);
+    make_camera_frame(scene.camera, scene.image.rows, scene.image.columns);
+}
+
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     detail::RendererState state;
     state.options = options;

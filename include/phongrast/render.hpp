@@ -195,9 +195,14 @@ struct RenderResult {
 };
 
 /// Renders a scene. Throws std::invalid_argument for an invalid camera, image
-/// size or mesh (the message names the field), and RenderCancelled when the
-/// progress callback asks to stop.
+/// size or mesh, or lit values that could pass 1e30 (the message names the
+/// field), and RenderCancelled when the progress callback asks to stop.
 RenderResult render(const Scene& scene, const RenderOptions& options = RenderOptions::exact());
+
+/// The checks render() makes before drawing, alone: throws what render()
+/// would throw for `scene` and `options`, so that a caller can name the file
+/// the bad value came from before any work.
+void validate_render(const Scene& scene, const RenderOptions& options = RenderOptions::exact());
 
 namespace detail {
 struct RendererState;
