@@ -29,7 +29,7 @@ glm::vec3 world_from_camera(const CameraFrame& frame, const Vec3<Real>& camera_n
 template <typename Real, bool Perspective>
 void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, const DrawTriangle<Real>& draw,
                     std::uint32_t source, int row_begin, int row_end, AovSamples& out) {
-    const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2);
+    const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2());
     Real inverse_depth[3];
     inverse_depths(draw, inverse_depth);
     glm::vec3 flat_normal(0.0f);

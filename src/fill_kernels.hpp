@@ -86,7 +86,7 @@ template <typename Real, bool Perspective>
 class SpanWeights {
 public:
     PHONGRAST_FILL_INLINE void set_up(const DrawTriangle<Real>& draw, const std::int64_t* step) {
-        inverse_area_ = Real(1) / static_cast<Real>(draw.coverage.area2);
+        inverse_area_ = Real(1) / static_cast<Real>(draw.coverage.area2());
         if constexpr (Perspective) inverse_depths(draw, inverse_depth_);
         for (int i = 0; i < 3; ++i) {
             dq_[i] = edge_weight<Real, Perspective>(step[i], inverse_area_, inverse_depth_[i]);
@@ -290,7 +290,7 @@ void fill_phong(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightV
                 const FillSetup<Real>& setup) {
     constexpr bool kNormals = Diffuse || Specular;
     const LightRig<Real>& rig = *setup.rig;
-    if constexpr (kNormals && !PerSampleVectors) vectors.compute(rig.active_lights, draw.centroid, Specular);
+    if constexpr (kNormals && !PerSampleVectors) vectors.compute(rig.active_lights, draw.centroid(), Specular);
     const FixedTerms<Ambient, Diffuse, Specular> terms;
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
         shade_phong_samples<Real, PerSampleVectors, UniformColor>(draw, n, w, terms, rig.active_lights, vectors, setup,
@@ -327,7 +327,7 @@ template <typename Real, bool Perspective, bool PerSampleVectors>
 void fill_phong_general(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
                         const FillSetup<Real>& setup) {
     const LightRig<Real>& rig = *setup.rig;
-    if (!PerSampleVectors) vectors.compute(rig.lights, draw.centroid, true);
+    if (!PerSampleVectors) vectors.compute(rig.lights, draw.centroid(), true);
     const SelectedTerms terms{rig.lighting};
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
         if (setup.uniform_color) {

@@ -24,18 +24,32 @@ namespace phongrast::detail {
 /// Rows of samples per band: the unit of work of the fill (binning.hpp).
 constexpr int kBandRows = 16;
 
-/// One triangle ready to fill: 144 bytes in float on 64-bit targets (`source` fills what was padding). The varyings are not
-/// copied: they stay in the mesh's vertex array (or, for the corners clipping
-/// creates, in the draw list's own storage), and the triangle points to them.
+/// One triangle ready to fill. The varyings are not copied: they stay in the
+/// mesh's vertex array (or, for the corners clipping creates, in the draw
+/// list's own storage), and the triangle points to them.
+///
+/// The renderer keeps one per drawn piece of every triangle until the frame
+/// is filled, so on a large mesh its size is most of the memory per triangle:
+/// 120 bytes in float on 64-bit targets (fields ordered so that only 4 bytes
+/// are padding). To keep it there, the coverage stores no area (the fill
+/// recomputes it exactly) and Phong's centroid shares the lit colours' place.
 template <typename Real>
 struct DrawTriangle {
-    CoverageTriangle coverage;
+    SnappedTriangle coverage;
+    Real depth[3];                ///< z_c of the corners
+    std::uint32_t source;         ///< index of the mesh triangle it comes from (the id output)
+    /// Gouraud: the lit corner colours; flat: the triangle's colour, thrice;
+    /// Phong, which reads no lit colour: centroid() in lit[0].
+    Vec3<Real> lit[3];
     const Varyings<Real>* v[3];  ///< in coverage order
-    Vec3<Real> lit[3];           ///< Gouraud: the lit corner colours; flat: the triangle's colour, thrice
-    Real depth[3];               ///< z_c of the corners
-    Vec3<Real> centroid;         ///< camera space, of the source triangle (seed light vectors)
-    std::uint32_t source;        ///< index of the mesh triangle it comes from (the id output)
+
+    /// Phong only: the source triangle's centroid in camera space, where the
+    /// seed's light vectors are computed (zero when they are not used).
+    const Vec3<Real>& centroid() const { return lit[0]; }
+    void set_centroid(const Vec3<Real>& centroid) { lit[0] = centroid; }
 };
+static_assert(sizeof(void*) != 8 || sizeof(DrawTriangle<float>) <= 120,
+              "DrawTriangle is most of the memory per triangle on large meshes: keep it at 120 bytes");
 
 /// The rows of the image (in samples) one task fills, and what it counts.
 template <typename Real>

@@ -110,38 +110,42 @@ struct CompactPoint {
     operator SnappedPoint() const { return {x, y}; }
 };
 
-/// A triangle ready for coverage: vertices ordered so that area2 > 0.
-/// Kept small: the renderer stores one per drawn triangle.
-struct CoverageTriangle {
+/// A triangle snapped for coverage: its vertices ordered so that
+/// E_01(v2) > 0 and the pixel centres its bounding box may hold. All that
+/// coverage and the fill's weights need: the renderer stores one per drawn
+/// triangle, so it is kept to 40 bytes, and the area is recomputed (exactly)
+/// rather than stored.
+struct SnappedTriangle {
     CompactPoint v[3];
-    std::int64_t area2 = 0;               ///< E_01(v2) = twice the area in (1/256 px)^2
-    bool swapped = false;                 ///< true if input vertices 1 and 2 were exchanged
     int row_min = 0, row_max = -1;        ///< pixel rows whose centres may be covered
     int column_min = 0, column_max = -1;  ///< pixel columns likewise
+
+    /// E_01(v2) = twice the area in (1/256 px)^2: > 0 once set up, 0 for a
+    /// degenerate triangle. The same integer set-up tested, so the same
+    /// inverse in the fill.
+    std::int64_t area2() const { return edge_value(v[0], v[1], v[2].x, v[2].y); }
+};
+
+/// setup_coverage()'s result: the snapped triangle and how its vertices were ordered.
+struct CoverageTriangle : SnappedTriangle {
+    bool swapped = false;  ///< true if input vertices 1 and 2 were exchanged
 };
 
 /// Sets up coverage for snapped vertices a, b, c inside an image of rows x
-/// columns. Returns false if the triangle has zero area (it covers no centre)
+/// columns. Returns false if the triangle has zero area (it covers no centre;
+/// the vertices are stored all the same, so area2() tells this case apart)
 /// or no pixel centre of the image lies in its bounding box.
 inline bool setup_coverage(const SnappedPoint& a, const SnappedPoint& b, const SnappedPoint& c, int rows,
                            int columns, CoverageTriangle& out) {
     assert(std::abs(a.x) <= kMaxSnappedMagnitude && std::abs(a.y) <= kMaxSnappedMagnitude);
     assert(std::abs(b.x) <= kMaxSnappedMagnitude && std::abs(b.y) <= kMaxSnappedMagnitude);
     assert(std::abs(c.x) <= kMaxSnappedMagnitude && std::abs(c.y) <= kMaxSnappedMagnitude);
-    std::int64_t area2 = edge_value(a, b, c.x, c.y);
-    if (area2 == 0) return false;
+    const std::int64_t area2 = edge_value(a, b, c.x, c.y);
+    out.swapped = area2 < 0;
     out.v[0] = a;
-    if (area2 > 0) {
-        out.v[1] = b;
-        out.v[2] = c;
-        out.swapped = false;
-    } else {
-        out.v[1] = c;
-        out.v[2] = b;
-        out.swapped = true;
-        area2 = -area2;
-    }
-    out.area2 = area2;
+    out.v[1] = out.swapped ? c : b;
+    out.v[2] = out.swapped ? b : c;
+    if (area2 == 0) return false;
 
     const std::int64_t x_min = std::min({a.x, b.x, c.x}), x_max = std::max({a.x, b.x, c.x});
     const std::int64_t y_min = std::min({a.y, b.y, c.y}), y_max = std::max({a.y, b.y, c.y});
@@ -160,7 +164,7 @@ inline bool setup_coverage(const SnappedPoint& a, const SnappedPoint& b, const S
 
 /// The covered pixel centres of one row of a triangle: they are contiguous
 /// (the triangle is convex). e[i] is the unbiased edge value opposite vertex
-/// i at the first of them, so e[i] / area2 is vertex i's screen-space
+/// i at the first of them, so e[i] / area2() is vertex i's screen-space
 /// barycentric weight there.
 struct CoveredSpan {
     int row;
@@ -179,7 +183,7 @@ struct CoveredSpan {
 /// all three biased values are >= 0, i.e. when their bitwise OR is.
 class CoveredRows {
 public:
-    PHONGRAST_ALWAYS_INLINE CoveredRows(const CoverageTriangle& t, int row_begin, int row_end)
+    PHONGRAST_ALWAYS_INLINE CoveredRows(const SnappedTriangle& t, int row_begin, int row_end)
         : first_row_(std::max(row_begin, t.row_min)),
           last_row_(std::min(row_end - 1, t.row_max)),
           column_min_(t.column_min),
@@ -314,7 +318,7 @@ PHONGRAST_NOINLINE void for_each_solved_span(const CoveredRows& rows, VisitSpan&
 /// [row_begin, row_end) where the triangle covers pixel centres, with e as in
 /// CoveredSpan and step[i] the change of e[i] per column.
 template <typename VisitSpan>
-void for_each_covered_span(const CoverageTriangle& t, int row_begin, int row_end, VisitSpan&& visit_span) {
+void for_each_covered_span(const SnappedTriangle& t, int row_begin, int row_end, VisitSpan&& visit_span) {
     const CoveredRows rows(t, row_begin, row_end);
     if (rows.empty()) return;
     if (!rows.tiny()) {
@@ -331,7 +335,7 @@ void for_each_covered_span(const CoverageTriangle& t, int row_begin, int row_end
 /// Calls visit(row, column, e0, e1, e2) for every covered pixel centre in rows
 /// [row_begin, row_end), with the unbiased edge values of for_each_covered_span.
 template <typename Visit>
-void for_each_covered_pixel(const CoverageTriangle& t, int row_begin, int row_end, Visit&& visit) {
+void for_each_covered_pixel(const SnappedTriangle& t, int row_begin, int row_end, Visit&& visit) {
     for_each_covered_span(
         t, row_begin, row_end,
         [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {

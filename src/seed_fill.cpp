@@ -31,7 +31,7 @@ void fill(const std::array<SeedCorner, 3>& corners, int rows, int columns, const
     if (rows < 1 || columns < 1) return;
     detail::CoverageTriangle triangle;
     if (!detail::setup_coverage(a, b, c, rows, columns, triangle)) return;  // no area, or no centre inside
-    const double area = static_cast<double>(triangle.area2);
+    const double area = static_cast<double>(triangle.area2());
     detail::for_each_covered_pixel(triangle, 0, rows,
                                    [&](int row, int column, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
         // Coverage may have swapped corners 1 and 2 to make the area positive.

@@ -121,12 +121,14 @@ private:
         const SnappedPoint a = snap(corner[0].column, corner[0].row);
         const SnappedPoint b = snap(corner[1].column, corner[1].row);
         const SnappedPoint c = snap(corner[2].column, corner[2].row);
-        const bool covers = setup_coverage(a, b, c, in_.view.frame.rows, in_.view.frame.columns, draw.coverage);
-        if (draw.coverage.area2 != 0) outcome.has_area = true;  // set whenever the snapped area is non-zero
+        CoverageTriangle coverage;
+        const bool covers = setup_coverage(a, b, c, in_.view.frame.rows, in_.view.frame.columns, coverage);
+        if (covers || coverage.area2() != 0) outcome.has_area = true;  // set whenever the snapped area is non-zero
         if (!covers) return false;
+        draw.coverage = coverage;  // what the fill reads: not `swapped`, used just below
         order[0] = 0;
-        order[1] = draw.coverage.swapped ? 2 : 1;
-        order[2] = draw.coverage.swapped ? 1 : 2;
+        order[1] = coverage.swapped ? 2 : 1;
+        order[2] = coverage.swapped ? 1 : 2;
         // Only Gouraud reads the corners' lit colours (flat writes its own
         // below): Phong's set-up leaves the vertex's varyings unread.
         const bool gouraud = in_.scene.shader == Shader::gouraud;
@@ -136,7 +138,7 @@ private:
             draw.lit[i] = !gouraud ? Vec3<Real>(Real(0)) : same_lit_ ? *same_lit_ : from.varyings->lit;
             draw.depth[i] = static_cast<Real>(from.depth);
         }
-        draw.centroid = centroid;
+        if (in_.scene.shader == Shader::phong) draw.set_centroid(centroid);
         draw.source = source_;
         outcome.drawn = true;
         return true;

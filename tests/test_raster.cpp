@@ -166,10 +166,10 @@ TEST_CASE("edge values are barycentric numerators") {
     REQUIRE(setup_coverage(snap(0.5, 0.5), snap(8.5, 0.5), snap(0.5, 8.5), 10, 10, setup));
     bool saw_corner = false;
     for_each_covered_pixel(setup, 0, 10, [&](int row, int column, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
-        CHECK(e0 + e1 + e2 == setup.area2);
+        CHECK(e0 + e1 + e2 == setup.area2());
         if (row == 0 && column == 0) {
             saw_corner = true;
-            CHECK(e0 == setup.area2);  // at vertex 0 all weight is on vertex 0
+            CHECK(e0 == setup.area2());  // at vertex 0 all weight is on vertex 0
         }
     });
     CHECK(saw_corner);

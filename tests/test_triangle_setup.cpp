@@ -66,14 +66,22 @@ TEST_CASE("a triangle inside the image is one draw pointing at the mesh's vertic
         CHECK(one.counts.drawn == 1);
         CHECK(one.counts.clipped == 0);
         const pd::DrawTriangle<float>& draw = one.draws[0];
-        CHECK(draw.coverage.area2 > 0);
-        swapped_seen[draw.coverage.swapped ? 1 : 0] = true;
-        CHECK(one.points_into_mesh(draw));
+        CHECK(draw.coverage.area2() > 0);
+        REQUIRE(one.points_into_mesh(draw));
         CHECK(draw.coverage.row_min >= 0);
         CHECK(draw.coverage.row_max < 64);
         // The draw's corners follow the coverage order: corner 1 is the mesh's vertex 2 when swapped.
-        CHECK(draw.v[1] == &one.vertices.varyings[draw.coverage.swapped ? 2 : 1]);
-        CHECK(draw.v[2] == &one.vertices.varyings[draw.coverage.swapped ? 1 : 2]);
+        const bool swapped = draw.v[1] == &one.vertices.varyings[2];
+        swapped_seen[swapped ? 1 : 0] = true;
+        CHECK(draw.v[0] == &one.vertices.varyings[0]);
+        CHECK(draw.v[1] == &one.vertices.varyings[swapped ? 2 : 1]);
+        CHECK(draw.v[2] == &one.vertices.varyings[swapped ? 1 : 2]);
+        for (int i = 0; i < 3; ++i) {
+            const pd::ScreenVertex& screen = one.vertices.screen[static_cast<std::size_t>(draw.v[i] - one.vertices.varyings.data())];
+            const pd::SnappedPoint snapped = pd::snap(screen.column, screen.row);
+            CHECK(draw.coverage.v[i].x == snapped.x);
+            CHECK(draw.coverage.v[i].y == snapped.y);
+        }
     }
     CHECK(swapped_seen[0]);  // one winding is kept, the other swapped
     CHECK(swapped_seen[1]);
@@ -128,4 +136,21 @@ TEST_CASE("flat set-up lights the triangle once and gives every corner that colo
     CHECK(draw.lit[0] == draw.lit[1]);
     CHECK(draw.lit[1] == draw.lit[2]);
     CHECK(draw.lit[0].x > 0.0f);
+}
+
+TEST_CASE("Phong set-up keeps the centroid for the seed's light vectors, and none without them") {
+    const std::vector<glm::dvec3> positions = {{-0.3, -0.3, 0}, {0.3, -0.3, 0}, {0.0, 0.3, 0}};
+    SetUpOne seed(positions);
+    seed.options.light_vectors = phongrast::LightVectors::triangle_centroid;
+    seed.run();
+    REQUIRE(seed.draws.size() == 1);
+    const std::vector<pd::Varyings<float>>& corners = seed.vertices.varyings;
+    const glm::vec3 centroid = (corners[0].position + corners[1].position + corners[2].position) / 3.0f;
+    CHECK(centroid.z != 0.0f);  // in camera space, in front of the eye
+    CHECK(seed.draws[0].centroid() == centroid);
+
+    SetUpOne exact(positions);
+    exact.run();
+    REQUIRE(exact.draws.size() == 1);
+    CHECK(exact.draws[0].centroid() == glm::vec3(0.0f));
 }
