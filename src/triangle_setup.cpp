@@ -206,8 +206,9 @@ private:
     /// corner by 1/z_c and divides by their sum, so beyond kMaxDrawableDepth
     /// those weights underflow and the sum's inverse overflows (in float, a
     /// depth past 3.4e38 is infinite outright), and the pixels would be NaN.
-    /// Corners behind the near plane are the clipping's to judge. A NaN depth
-    /// (a position whose transform overflowed) is out of range too.
+    /// A corner behind the eye (negative depth, however far) is left to the
+    /// near-plane clipping, which skips what it cannot represent. A NaN depth
+    /// (a position whose transform overflowed) fails both tests: out of range.
     static bool within_drawable_depth(const ScreenVertex& corner) {
         return corner.depth <= kMaxDrawableDepth<Real> || corner.depth < 0.0;
     }
