@@ -69,6 +69,20 @@ const char* to_string(Shader shader) {
     return "unknown";
 }
 
+NormalSource parse_normal_source(std::string_view text) {
+    if (text == "computed") return NormalSource::computed;
+    if (text == "file") return NormalSource::file;
+    throw std::invalid_argument("normals: unknown '" + std::string(text) + "'; expected computed or file");
+}
+
+const char* to_string(NormalSource source) {
+    switch (source) {
+        case NormalSource::computed: return "computed";
+        case NormalSource::file: return "file";
+    }
+    return "unknown";
+}
+
 RenderOptions RenderOptions::seed() {
     RenderOptions options;
     options.light_vectors = LightVectors::triangle_centroid;

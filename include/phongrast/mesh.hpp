@@ -7,11 +7,19 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "phongrast/material.hpp"
 
 namespace phongrast {
 
 using Triangle = std::array<std::uint32_t, 3>;
+
+/// In a per-corner index triple (Mesh::texcoord_triangles,
+/// Mesh::file_normal_triangles) or Mesh::face_materials: this corner or face
+/// has no such attribute.
+constexpr std::uint32_t kNoIndex = 0xffffffffu;
 
 struct Mesh {
     /// World positions, in double so that meshes far from the origin (1e7) keep their detail.
@@ -22,6 +30,29 @@ struct Mesh {
     std::vector<Triangle> triangles;
     /// Unit normal per vertex; empty means "compute with calculate_normals".
     std::vector<glm::vec3> normals;
+
+    // What contract version 2 reads from mesh files besides the above. All
+    // are optional (empty: none), and a mesh with none of them renders as a
+    // version-1 mesh. Per-corner attributes are indexed as OBJ indexes them:
+    // their own value array, and per triangle three indices into it (kNoIndex
+    // for a corner without one), so one position can carry different values
+    // on different faces (texture seams, hard edges) while computed normals
+    // still follow the position indices in `triangles`.
+
+    /// Texture coordinates (s, t), t = 0 at the texture's bottom row (OBJ
+    /// `vt u v` is (u, v); glTF (u, v) is (u, 1 - v)).
+    std::vector<glm::vec2> texcoords;
+    /// Per triangle, its corners' indices into `texcoords` (or kNoIndex).
+    std::vector<Triangle> texcoord_triangles;
+    /// Normals the file gives (OBJ `vn`, glTF NORMAL, PLY nx ny nz), used with
+    /// "normals": "file" (Scene::normals, SceneObject::normals).
+    std::vector<glm::vec3> file_normals;
+    /// Per triangle, its corners' indices into `file_normals` (or kNoIndex).
+    std::vector<Triangle> file_normal_triangles;
+    /// The materials the file gives its faces (OBJ usemtl/MTL, glTF primitives).
+    std::vector<FaceMaterial> materials;
+    /// Per triangle, its index into `materials`, or kNoIndex for none.
+    std::vector<std::uint32_t> face_materials;
 };
 
 /// Area-weighted vertex normals: each face adds its right-hand-rule cross

@@ -7,18 +7,22 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "phongrast/aov.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/image.hpp"
 #include "phongrast/lighting.hpp"
+#include "phongrast/material.hpp"
 #include "phongrast/mesh.hpp"
 #include "phongrast/progress.hpp"
+#include "phongrast/texture.hpp"
 
 namespace phongrast {
 
@@ -105,6 +109,8 @@ struct RenderOptions {
     AovRequest aovs;
     /// Progress reports, and cancellation by returning false (progress.hpp). Empty: none.
     ProgressCallback progress;
+    /// How textured faces sample their texture; the contract's picture is bilinear.
+    TextureFilter texture_filter = TextureFilter::bilinear;
 
     /// Exactly the contract's three seed simplifications, nothing else.
     static RenderOptions seed();
@@ -118,12 +124,49 @@ struct ImageSpec {
     glm::vec3 background{1.0f};
 };
 
-/// Everything a scene file describes, with the mesh loaded.
+/// Where vertex normals come from (contract "Lighting").
+enum class NormalSource {
+    computed,  ///< area-weighted from the positions (calculate_normals), per object in world space
+    file,      ///< each corner's normal from the mesh file (Mesh::file_normals), else the computed one
+};
+/// "computed" or "file"; throws std::invalid_argument otherwise.
+NormalSource parse_normal_source(std::string_view text);
+const char* to_string(NormalSource source);
+
+/// One placed mesh of a scene of several objects (contract "Objects").
+struct SceneObject {
+    /// Shared, so that a mesh placed many times is held once.
+    std::shared_ptr<const Mesh> mesh;
+    /// Model matrix (column vectors: p_world = transform * [p, 1]); last row
+    /// 0 0 0 1, finite, not singular. A negative determinant (a mirror)
+    /// reverses each triangle's corners so computed normals stay outward.
+    glm::dmat4 transform{1.0};
+    /// Overrides the scene's material fields (and so each face's own), field by field.
+    MaterialFields material;
+    /// Overrides Scene::normals for this object when set.
+    std::optional<NormalSource> normals;
+    std::string name;  ///< for messages ("objects[2]" when empty)
+};
+
+/// Everything a scene file describes, with the meshes loaded.
+///
+/// Either one mesh (`mesh`, object 0 with the identity transform: the
+/// version-1 scene, rendered exactly as before) or several `objects`, whose
+/// triangles form one list in the order given for painter's order and the
+/// id output. Not both: a scene with objects must leave `mesh` empty.
 struct Scene {
     Mesh mesh;
+    std::vector<SceneObject> objects;
     Camera camera;
     ImageSpec image;
+    /// The base material: what every face has when nothing else gives a field
+    /// (for scene files: the scene's fields, else the contract's defaults).
     PhongMaterial material;
+    /// The scene's own material fields, which win over each face's material
+    /// from its mesh file (contract precedence: object, scene, face, base).
+    /// Empty for version-1 scenes built in memory: `material` is then all.
+    MaterialFields material_fields;
+    NormalSource normals = NormalSource::computed;
     glm::vec3 ambient{0.2f};  ///< Ia
     std::vector<PointLight> lights;
     Shader shader = Shader::phong;
