@@ -289,7 +289,7 @@ template <typename Real, bool Perspective, bool Ambient, bool Diffuse, bool Spec
 void fill_phong(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
                 const FillSetup<Real>& setup) {
     constexpr bool kNormals = Diffuse || Specular;
-    const LightRig<Real>& rig = *setup.rig;
+    const LightRig<Real>& rig = setup.rig_of(draw);
     if constexpr (kNormals && !PerSampleVectors) vectors.compute(rig.active_lights, draw.centroid(), Specular);
     const FixedTerms<Ambient, Diffuse, Specular> terms;
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
@@ -307,7 +307,7 @@ void fill_phong(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightV
 template <typename Real, bool Perspective, bool Ambient, bool UniformColor>
 void fill_phong_unlit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
                       const FillSetup<Real>& setup) {
-    const Vec3<Real> factor = setup.rig->ambient_factor;
+    const Vec3<Real> factor = setup.rig_of(draw).ambient_factor;
     fill_samples<Real, Perspective>(draw, target, [&](const Real* w) {
         Vec3<Real> out(Real(0));
         if constexpr (Ambient) {
@@ -326,7 +326,7 @@ void fill_phong_unlit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, 
 template <typename Real, bool Perspective, bool PerSampleVectors>
 void fill_phong_general(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
                         const FillSetup<Real>& setup) {
-    const LightRig<Real>& rig = *setup.rig;
+    const LightRig<Real>& rig = setup.rig_of(draw);
     if (!PerSampleVectors) vectors.compute(rig.lights, draw.centroid(), true);
     const SelectedTerms terms{rig.lighting};
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {

@@ -105,7 +105,7 @@ PHONGRAST_FILL_INLINE void shade_ambient_lanes(const DrawTriangle<Real>& draw, i
         }
         for (int l = 0; l < n; ++l) out[c][l] = Real(0);
         if (terms.ambient()) {
-            const Real factor = setup.rig->ambient_factor[c];
+            const Real factor = setup.rig_of(draw).ambient_factor[c];
             for (int l = 0; l < n; ++l) out[c][l] += factor * color[c][l];
         }
     }
@@ -209,7 +209,7 @@ void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>*
     Lanes<Real> normal[3], point[3], eye[3] = {};
     surface_lanes<Real, PerSampleVectors>(draw, n, w, terms, vectors, normal, point, eye);
     for (std::size_t k = 0; k < lights.size(); ++k) {
-        add_light_lanes<Real, PerSampleVectors>(n, k, terms, lights, vectors, *setup.rig, normal, point, eye, color,
+        add_light_lanes<Real, PerSampleVectors>(n, k, terms, lights, vectors, setup.rig_of(draw), normal, point, eye, color,
                                                 out);
     }
 }

@@ -30,14 +30,17 @@ constexpr int kBandRows = 16;
 ///
 /// The renderer keeps one per drawn piece of every triangle until the frame
 /// is filled, so on a large mesh its size is most of the memory per triangle:
-/// 120 bytes in float on 64-bit targets (fields ordered so that only 4 bytes
-/// are padding). To keep it there, the coverage stores no area (the fill
+/// 120 bytes in float on 64-bit targets (fields ordered so that no byte is
+/// padding: the material index took the last 4). To keep it there, the coverage stores no area (the fill
 /// recomputes it exactly) and Phong's centroid shares the lit colours' place.
 template <typename Real>
 struct DrawTriangle {
     SnappedTriangle coverage;
     Real depth[3];                ///< z_c of the corners
     std::uint32_t source;         ///< index of the mesh triangle it comes from (the id output)
+    /// Its material: an index into FillSetup::rig (0 in a scene of one
+    /// material). It fills what was padding: the size does not change.
+    std::uint32_t surface;
     /// Gouraud: the lit corner colours; flat: the triangle's colour, thrice;
     /// Phong, which reads no lit colour: centroid() in lit[0].
     Vec3<Real> lit[3];
@@ -101,9 +104,12 @@ const std::uint32_t* owner_row(const FillTarget<Real>& target, int row) {
 /// Per-render constants the kernels read.
 template <typename Real>
 struct FillSetup {
+    /// One rig per material of the scene (one for a version-1 scene), indexed by DrawTriangle::surface.
     const LightRig<Real>* rig = nullptr;
     bool uniform_color = true;
     Vec3<Real> color{Real(1)};  ///< the colour of every vertex when uniform_color
+
+    const LightRig<Real>& rig_of(const DrawTriangle<Real>& draw) const { return rig[draw.surface]; }
 };
 
 template <typename Real>

@@ -9,9 +9,29 @@
 
 namespace phongrast::detail {
 
+namespace {
+
+/// A scene of several materials: a rig and a shader per material, all with
+/// the scene's effect set (the union over its materials).
 template <typename Real>
-void render_pass(const Scene& scene, const RenderOptions& options, int rows, int columns, glm::dvec2 sample_offset,
-                 FrameMemory<Real>& memory, RenderStats& stats, const PassOutput& out, ProgressMonitor& progress) {
+void build_surface_shaders(const Scene& scene, const AssembledScene& assembled, const View& view,
+                           const PointShader<Real>& point_shader, FrameMemory<Real>& memory) {
+    const std::size_t count = assembled.surfaces.size();
+    memory.surface_rigs.resize(count);
+    memory.surface_shaders.resize(count);
+    for (std::size_t s = 0; s < count; ++s) {
+        build_light_rig(scene, assembled.surfaces[s].material, view.frame, memory.surface_rigs[s]);
+        memory.surface_shaders[s] = point_shader;
+        memory.surface_shaders[s].rig = &memory.surface_rigs[s];
+    }
+}
+
+}  // namespace
+
+template <typename Real>
+void render_pass(const Scene& scene, const AssembledScene* assembled, const RenderOptions& options, int rows,
+                 int columns, glm::dvec2 sample_offset, FrameMemory<Real>& memory, RenderStats& stats,
+                 const PassOutput& out, ProgressMonitor& progress) {
     const View view(scene.camera, rows, columns, sample_offset);
     const EffectSet effects = find_effects(scene);
     stats.effects = effects;
@@ -23,15 +43,29 @@ void render_pass(const Scene& scene, const RenderOptions& options, int rows, int
     stats.back_faces_culled = cull != HiddenBackFaces::unknown;
     build_light_rig(scene, view.frame, memory.rig);
     const PointShader<Real> point_shader{&memory.rig, effects, options.specialize_effects};
-    const FillPlan<Real> fill_plan = plan_fill(scene, options, effects, memory.rig);
+    // Several materials: each triangle and vertex names its own (assembly).
+    const bool several = assembled != nullptr && !assembled->single_surface();
+    if (several) build_surface_shaders(scene, *assembled, view, point_shader, memory);
+    FillPlan<Real> fill_plan = plan_fill(scene, options, effects, several ? memory.surface_rigs[0] : memory.rig);
+    if (several) fill_plan.order_free = false;  // one colour per material, not one for all
+    const VertexMaterials<Real> vertex_materials{several ? assembled->vertex_surfaces.data() : nullptr,
+                                                 several ? memory.surface_shaders.data() : nullptr};
     if (scene.shader == Shader::gouraud && options.light_vectors == LightVectors::shaded_point) {
-        light_vertices(point_shader, memory.vertices.varyings, memory.vertex_stage);
+        light_vertices(point_shader, vertex_materials, memory.vertices.varyings, memory.vertex_stage);
         count_term_evaluations(scene, options, effects, memory.vertices.varyings.size(), LitPoints::outside_the_fill,
                                stats);
     }
 
     // Set-up first, in mesh order; then painter's order of what draws; then bands in that order.
-    const SetupInput<Real> setup{scene, options, view, memory.vertices, cull, point_shader, fill_plan.setup};
+    const SetupInput<Real> setup{scene,
+                                 options,
+                                 view,
+                                 memory.vertices,
+                                 cull,
+                                 point_shader,
+                                 fill_plan.setup,
+                                 several ? assembled->triangle_surfaces.data() : nullptr,
+                                 several ? memory.surface_shaders.data() : nullptr};
     set_up_triangles(setup, memory.draws, stats, progress);
     const bool sort = !fill_plan.order_free || out.aov_planes.any();  // depth and id name the last triangle
     painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, sort, memory.painter,
@@ -52,9 +86,9 @@ void render_pass(const Scene& scene, const RenderOptions& options, int rows, int
     }
 }
 
-template void render_pass<float>(const Scene&, const RenderOptions&, int, int, glm::dvec2, FrameMemory<float>&,
-                                 RenderStats&, const PassOutput&, ProgressMonitor&);
-template void render_pass<double>(const Scene&, const RenderOptions&, int, int, glm::dvec2, FrameMemory<double>&,
-                                  RenderStats&, const PassOutput&, ProgressMonitor&);
+template void render_pass<float>(const Scene&, const AssembledScene*, const RenderOptions&, int, int, glm::dvec2,
+                                 FrameMemory<float>&, RenderStats&, const PassOutput&, ProgressMonitor&);
+template void render_pass<double>(const Scene&, const AssembledScene*, const RenderOptions&, int, int, glm::dvec2,
+                                  FrameMemory<double>&, RenderStats&, const PassOutput&, ProgressMonitor&);
 
 }  // namespace phongrast::detail

@@ -14,6 +14,7 @@
 #include "painter_order.hpp"
 #include "progress_monitor.hpp"
 #include "phongrast/render.hpp"
+#include "scene_assembly.hpp"
 #include "shading.hpp"
 #include "triangle_setup.hpp"
 #include "vertex_stage.hpp"
@@ -33,6 +34,9 @@ struct FrameMemory {
     BinningMemory binning;
     Bins<Real> bins;
     FillMemory<Real> fill;
+    /// A scene of several materials: one rig and one shader per material.
+    std::vector<LightRig<Real>> surface_rigs;
+    std::vector<PointShader<Real>> surface_shaders;
 };
 
 /// What one render pass writes: the image, and the extra outputs `aov_planes`
@@ -46,10 +50,12 @@ struct PassOutput {
 /// Renders `scene` at rows x columns samples, each sample `sample_offset`
 /// pixels from its pixel's centre, into `out` (its memory reused); adds
 /// this pass's counts to `stats`. Reports progress; throws RenderCancelled
-/// when the callback asks to stop.
+/// when the callback asks to stop. `assembled`: what assembly made of a
+/// version-2 scene (`scene` is then assembled->scene), or null.
 template <typename Real>
-void render_pass(const Scene& scene, const RenderOptions& options, int rows, int columns, glm::dvec2 sample_offset,
-                 FrameMemory<Real>& memory, RenderStats& stats, const PassOutput& out, ProgressMonitor& progress);
+void render_pass(const Scene& scene, const AssembledScene* assembled, const RenderOptions& options, int rows,
+                 int columns, glm::dvec2 sample_offset, FrameMemory<Real>& memory, RenderStats& stats,
+                 const PassOutput& out, ProgressMonitor& progress);
 
 }  // namespace phongrast::detail
 

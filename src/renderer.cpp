@@ -14,6 +14,7 @@
 #include "pipeline.hpp"
 #include "progress_monitor.hpp"
 #include "resolve.hpp"
+#include "scene_assembly.hpp"
 #include "validation.hpp"
 
 namespace phongrast {
@@ -28,8 +29,10 @@ struct RendererState final : PassRenderer {
     FrameMemory<float> single;
     FrameMemory<double> twice;
     AovSamples aov_samples;  ///< one pass's extra outputs per sample, before their resolve into result.aovs
+    SceneAssembly assembly;  ///< a version-2 scene as one render mesh, kept for the next frame
     // During render():
-    const Scene* scene = nullptr;          ///< the scene being rendered
+    const Scene* scene = nullptr;          ///< the scene being rendered (assembled, for a version-2 scene)
+    const AssembledScene* assembled = nullptr;  ///< what assembly made of it, or null (version 1)
     ProgressMonitor* progress = nullptr;   ///< its progress reports
     AovRequest aov_planes;                 ///< the planes each pass fills (none unless asked for)
     int passes = 1, passes_done = 0;       ///< render passes of this frame (rotated grid: one per sample)
@@ -48,16 +51,21 @@ struct RendererState final : PassRenderer {
         progress->set_pass(passes_done++, passes);
         const PassOutput out{image, aov_planes, aov_samples};
         if (options.precision == Precision::double_float) {
-            detail::render_pass(*scene, options, rows, columns, sample_offset, twice, stats, out, *progress);
+            detail::render_pass(*scene, assembled, options, rows, columns, sample_offset, twice, stats, out,
+                                *progress);
         } else {
-            detail::render_pass(*scene, options, rows, columns, sample_offset, single, stats, out, *progress);
+            detail::render_pass(*scene, assembled, options, rows, columns, sample_offset, single, stats, out,
+                                *progress);
         }
         // A pass has samples_per_axis samples per pixel axis (ordered grid) or one (rotated grid, no supersampling).
         if (aov_planes.any()) resolve_aovs(aov_samples, rows / scene->image.rows, aov_planes, result.aovs);
     }
 
-    void render(const Scene& rendered) {
+    void render(const Scene& requested) {
         const auto start = std::chrono::steady_clock::now();
+        // A version-1 scene goes as it is; a version-2 one as the mesh assembly makes of it.
+        assembled = needs_assembly(requested) ? &assembly.assemble(requested) : nullptr;
+        const Scene& rendered = assembled != nullptr ? assembled->scene : requested;
         validate_render_request(rendered, options);
         ProgressMonitor monitor(options.progress);
         const int factor = options.samples_per_axis;
@@ -71,6 +79,7 @@ struct RendererState final : PassRenderer {
         result.stats.triangles_in = rendered.mesh.triangles.size();
         arena_for(options.threads).execute([&] { render_and_resolve(rendered, options, *this, resolve_images, result); });
         scene = nullptr;
+        assembled = nullptr;
         progress = nullptr;
         if (aov_planes.any()) finish_aovs(options.aovs, factor * factor, result.aovs);
         monitor.finish();
@@ -96,7 +105,14 @@ const RenderResult& Renderer::render(const Scene& scene) {
 }
 
 void validate_render(const Scene& scene, const RenderOptions& options) {
-    detail::validate_render_request(scene, options);
+    if (detail::needs_assembly(scene)) {
+        detail::AssembledScene assembled;
+        detail::NormalsScratch scratch;
+        detail::assemble_scene(scene, assembled, scratch);
+        detail::validate_render_request(assembled.scene, options);
+    } else {
+        detail::validate_render_request(scene, options);
+    }
     make_camera_frame(scene.camera, scene.image.rows, scene.image.columns);
 }
 

@@ -45,6 +45,7 @@ public:
     // and are counted and flat-lit here.
     void run(std::uint32_t source) {
         source_ = source;
+        surface_ = in_.triangle_surfaces != nullptr ? in_.triangle_surfaces[source] : 0;
         const Triangle& tri = in_.scene.mesh.triangles[source];
         if (in_.cull != HiddenBackFaces::unknown && faces_away(in_.scene.mesh, in_.scene.camera.eye, in_.cull, tri)) {
             ++counts_.culled;
@@ -140,6 +141,7 @@ private:
         }
         if (in_.scene.shader == Shader::phong) draw.set_centroid(centroid);
         draw.source = source_;
+        draw.surface = surface_;
         outcome.drawn = true;
         return true;
     }
@@ -240,6 +242,7 @@ private:
     /// computes exactly this at every vertex, corner and centroid. Flat and
     /// Gouraud's corners then take it without reading any vertex.
     std::optional<Vec3<Real>> same_lit_everywhere() const {
+        if (in_.triangle_surfaces != nullptr) return std::nullopt;  // one colour per material: lit per triangle
         if (!in_.shader.specialized || in_.shader.effects.normals || !in_.fill.uniform_color) return std::nullopt;
         return in_.shader.shade_prepared(vectors_, Vec3<Real>(Real(0)), in_.fill.color);
     }
@@ -253,7 +256,7 @@ private:
             color += vertices_.varyings[index].color;
         }
         const Vec3<Real> surface = in_.fill.uniform_color ? in_.fill.color : color / Real(3);
-        return in_.shader(vectors_, centroid, safe_normalize<Real>(normal), surface);
+        return shader()(vectors_, centroid, safe_normalize<Real>(normal), surface);
     }
 
     // Gouraud with the seed's centroid vectors: lights the triangle's own
@@ -261,15 +264,22 @@ private:
     // came from light_vertices()).
     std::uint64_t light_corners(Varyings<Real>* const corners[3], const Vec3<Real>& centroid) const {
         if (in_.options.light_vectors != LightVectors::triangle_centroid) return 0;
-        in_.shader.compute_vectors(vectors_, centroid);  // the same vectors for all three corners
+        const PointShader<Real>& lighting = shader();
+        lighting.compute_vectors(vectors_, centroid);  // the same vectors for all three corners
         for (int i = 0; i < 3; ++i) {
             Varyings<Real>& v = *corners[i];
-            v.lit = in_.shader.shade_prepared(vectors_, v.normal, v.color);
+            v.lit = lighting.shade_prepared(vectors_, v.normal, v.color);
         }
         return 3;
     }
 
+    /// The shader of the triangle being set up: its material's.
+    const PointShader<Real>& shader() const {
+        return in_.triangle_surfaces != nullptr ? in_.surface_shaders[surface_] : in_.shader;
+    }
+
     std::uint32_t source_ = 0;  ///< the mesh triangle being set up
+    std::uint32_t surface_ = 0; ///< its material (index into SetupInput::surface_shaders)
     const SetupInput<Real>& in_;
     const TransformedVertices<Real>& vertices_;
     std::vector<DrawTriangle<Real>>& out_;

@@ -113,6 +113,10 @@ struct SetupInput {
     HiddenBackFaces cull;             ///< back_faces_to_cull()
     const PointShader<Real>& shader;  ///< lights flat centroids and seed-Gouraud corners
     const FillSetup<Real>& fill;      ///< the uniform surface colour, when there is one
+    /// A scene of several materials: each triangle's material, and one shader
+    /// per material (same effects, its own rig). Null: `shader` for every triangle.
+    const std::uint32_t* triangle_surfaces = nullptr;
+    const PointShader<Real>* surface_shaders = nullptr;
 };
 
 /// Sets up every triangle of the mesh, in mesh order, into `draws` and adds

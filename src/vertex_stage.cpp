@@ -92,12 +92,18 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
 
 template <typename Real>
 void build_light_rig(const Scene& scene, const CameraFrame& frame, LightRig<Real>& rig) {
+    build_light_rig(scene, scene.material, frame, rig);
+}
+
+template <typename Real>
+void build_light_rig(const Scene& scene, const PhongMaterial& material, const CameraFrame& frame,
+                     LightRig<Real>& rig) {
     rig.lights.clear();
     rig.active_lights.clear();
-    rig.material = scene.material;
+    rig.material = material;
     rig.lighting = scene.lighting;
     // The same product, in the same order, as ambient_term(): ka * Ia, then * c.
-    rig.ambient_factor = Vec3<Real>(scene.material.ka) * Vec3<Real>(scene.ambient);
+    rig.ambient_factor = Vec3<Real>(material.ka) * Vec3<Real>(scene.ambient);
     for (const PointLight& light : scene.lights) {
         const CameraLight<Real> camera_light{Vec3<Real>(frame.camera_from_world(light.position)),
                                              Vec3<Real>(light.intensity)};
@@ -119,8 +125,9 @@ constexpr std::size_t kMaxLaneLights = 8;
 /// normalised by safe_normalize_lanes() (vectorised), then each vertex is
 /// shaded from them: what PointShader computes vertex by vertex, bit for bit.
 template <typename Real>
-void light_vertex_lanes(const PointShader<Real>& shader, std::vector<Varyings<Real>>& varyings, std::size_t begin,
-                        std::size_t end, LightVectorsAt<Real>& vectors) {
+void light_vertex_lanes(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
+                        std::vector<Varyings<Real>>& varyings, std::size_t begin, std::size_t end,
+                        LightVectorsAt<Real>& vectors) {
     const std::vector<CameraLight<Real>>& lights = shader.rig->active_lights;
     const std::size_t count = lights.size() + 1;  // the lights, then the eye
     Real lanes[(kMaxLaneLights + 1) * 3 * kLightingLanes];
@@ -146,7 +153,7 @@ void light_vertex_lanes(const PointShader<Real>& shader, std::vector<Varyings<Re
             for (std::size_t k = 0; k < lights.size(); ++k) vectors.to_light[k] = {lane(k, 0)[i], lane(k, 1)[i], lane(k, 2)[i]};
             if (shader.effects.specular) vectors.to_eye = {lane(lights.size(), 0)[i], lane(lights.size(), 1)[i], lane(lights.size(), 2)[i]};
             Varyings<Real>& v = varyings[first + i];
-            v.lit = shader.shade_with(vectors, v.normal, v.color);
+            v.lit = materials.shader_of(shader, first + i).shade_with(vectors, v.normal, v.color);
         }
     }
 }
@@ -154,8 +161,8 @@ void light_vertex_lanes(const PointShader<Real>& shader, std::vector<Varyings<Re
 }  // namespace
 
 template <typename Real>
-void light_vertices(const PointShader<Real>& shader, std::vector<Varyings<Real>>& varyings,
-                    VertexStageMemory<Real>& memory) {
+void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
+                    std::vector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory) {
     const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
     if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
     const bool lanes = shader.specialized && shader.effects.normals && shader.rig->active_lights.size() <= kMaxLaneLights;
@@ -166,12 +173,12 @@ void light_vertices(const PointShader<Real>& shader, std::vector<Varyings<Real>>
         const std::size_t begin = block * kLightingBlock;
         const std::size_t end = std::min(varyings.size(), (block + 1) * kLightingBlock);
         if (lanes) {
-            light_vertex_lanes(shader, varyings, begin, end, vectors);
+            light_vertex_lanes(shader, materials, varyings, begin, end, vectors);
             return;
         }
         for (std::size_t i = begin; i != end; ++i) {
             Varyings<Real>& v = varyings[i];
-            v.lit = shader(vectors, v.position, v.normal, v.color);
+            v.lit = materials.shader_of(shader, i)(vectors, v.position, v.normal, v.color);
         }
     });
 }
@@ -180,8 +187,9 @@ void light_vertices(const PointShader<Real>& shader, std::vector<Varyings<Real>>
     template void transform_vertices<Real>(const Mesh&, const View&, bool, VertexStageMemory<Real>&,            \
                                            TransformedVertices<Real>&, ProgressMonitor&);                       \
     template void build_light_rig<Real>(const Scene&, const CameraFrame&, LightRig<Real>&);                     \
-    template void light_vertices<Real>(const PointShader<Real>&, std::vector<Varyings<Real>>&,                  \
-                                       VertexStageMemory<Real>&);
+    template void build_light_rig<Real>(const Scene&, const PhongMaterial&, const CameraFrame&, LightRig<Real>&); \
+    template void light_vertices<Real>(const PointShader<Real>&, const VertexMaterials<Real>&,                  \
+                                       std::vector<Varyings<Real>>&, VertexStageMemory<Real>&);
 PHONGRAST_INSTANTIATE_VERTEX_STAGE(float)
 PHONGRAST_INSTANTIATE_VERTEX_STAGE(double)
 #undef PHONGRAST_INSTANTIATE_VERTEX_STAGE

@@ -58,11 +58,28 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
 template <typename Real>
 void build_light_rig(const Scene& scene, const CameraFrame& frame, LightRig<Real>& rig);
 
+/// The same with the material `material` instead of the scene's (one rig per material).
+template <typename Real>
+void build_light_rig(const Scene& scene, const PhongMaterial& material, const CameraFrame& frame,
+                     LightRig<Real>& rig);
+
+/// Which shader lights each vertex: in a scene of several materials, its
+/// material's (assembly splits vertices so that each has one); else the one shader.
+template <typename Real>
+struct VertexMaterials {
+    const std::uint32_t* vertex_surfaces = nullptr;     ///< per vertex; null: one material
+    const PointShader<Real>* surface_shaders = nullptr; ///< per material
+
+    const PointShader<Real>& shader_of(const PointShader<Real>& shader, std::size_t vertex) const {
+        return vertex_surfaces != nullptr ? surface_shaders[vertex_surfaces[vertex]] : shader;
+    }
+};
+
 /// Gouraud with exact light vectors: each vertex's colour does not depend on
 /// the triangle, so it is lit once, into Varyings::lit, and shared.
 template <typename Real>
-void light_vertices(const PointShader<Real>& shader, std::vector<Varyings<Real>>& varyings,
-                    VertexStageMemory<Real>& memory);
+void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
+                    std::vector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory);
 
 }  // namespace phongrast::detail
 
