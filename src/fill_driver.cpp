@@ -86,8 +86,9 @@ void prepare_memory(const FillPlan<Real>& plan, int bands, std::size_t samples, 
 
 template <typename Real>
 FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const EffectSet& effects,
-                         const LightRig<Real>& rig) {
+                         const LightRig<Real>& rig, const KernelTexture* textures) {
     FillPlan<Real> plan;
+    plan.setup.textures = textures;
     const std::vector<glm::vec3>& colors = scene.mesh.colors;
     plan.setup.rig = &rig;
     plan.setup.uniform_color = !effects.varying_colors;
@@ -100,16 +101,21 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     choice.per_sample_vectors = options.light_vectors == LightVectors::shaded_point;
     choice.uniform_color = plan.setup.uniform_color;
     choice.effects = effects;
+    choice.textured = textures != nullptr;
     plan.kernel = pick_fill_kernel<Real>(choice);
     plan.effects = effects;
     plan.depth_test = options.visibility == Visibility::depth_buffer;
     plan.shade_visible_only = !plan.depth_test && overdraw_shades_visible_only(scene, options, effects);
+    // A texture lookup per sample costs more than the second coverage pass too.
+    if (textures != nullptr && options.overdraw == Overdraw::automatic && scene.shader == Shader::phong) {
+        plan.shade_visible_only = !plan.depth_test;
+    }
     // Gouraud is left out: its kernel interpolates three equal corner colours
     // with weights that need not sum to exactly 1, so triangles can differ in
     // the last bit. Phong's unlit kernel and flat write the colour itself.
     const bool one_color = options.specialize_effects && scene.shader != Shader::gouraud && !effects.diffuse &&
                            !effects.specular && !effects.varying_colors;
-    plan.order_free = one_color && !plan.depth_test && !plan.shade_visible_only;
+    plan.order_free = one_color && !plan.depth_test && !plan.shade_visible_only && textures == nullptr;
     return plan;
 }
 
@@ -154,7 +160,7 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
 
 #define PHONGRAST_INSTANTIATE_FILL_DRIVER(Real)                                                              \
     template FillPlan<Real> plan_fill<Real>(const Scene&, const RenderOptions&, const EffectSet&,                \
-                                            const LightRig<Real>&);                                              \
+                                            const LightRig<Real>&, const KernelTexture*);                    \
     template void fill_bins<Real>(const Scene&, const RenderOptions&, const FillPlan<Real>&, const Bins<Real>&,  \
                                   int, int, FillMemory<Real>&, Image&, RenderStats&, ProgressMonitor&);
 PHONGRAST_INSTANTIATE_FILL_DRIVER(float)

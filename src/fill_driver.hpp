@@ -47,9 +47,11 @@ struct FillPlan {
 };
 
 /// Chooses the kernel and strategy for the scene, its effects and the options.
+/// `textures`: per material, for a scene with texture maps (the textured
+/// kernels; the order of triangles always matters then); null otherwise.
 template <typename Real>
 FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const EffectSet& effects,
-                         const LightRig<Real>& rig);
+                         const LightRig<Real>& rig, const KernelTexture* textures = nullptr);
 
 /// Fills `image` (resized to rows x columns samples and cleared to the
 /// background) from the bins; adds the samples covered and shaded, the

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "fill_types.hpp"
@@ -323,12 +324,14 @@ void fill_phong_unlit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, 
 }
 
 /// Phong as a straightforward implementation writes it: every term checked per batch, every light.
-template <typename Real, bool Perspective, bool PerSampleVectors>
+/// Textured: the same with c multiplied by T(s, t) at each sample (the kernel of textured scenes).
+template <typename Real, bool Perspective, bool PerSampleVectors, bool Textured = false>
 void fill_phong_general(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
                         const FillSetup<Real>& setup) {
     const LightRig<Real>& rig = setup.rig_of(draw);
     if (!PerSampleVectors) vectors.compute(rig.lights, draw.centroid(), true);
-    const SelectedTerms terms{rig.lighting};
+    std::conditional_t<Textured, SelectedTexturedTerms, SelectedTerms> terms;
+    terms.lighting = rig.lighting;
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
         if (setup.uniform_color) {
             shade_phong_samples<Real, PerSampleVectors, true>(draw, n, w, terms, rig.lights, vectors, setup, out);
@@ -357,6 +360,10 @@ template <typename Real, bool Perspective>
 FillKernel<Real> pick_kernel_for_projection(const KernelChoice& c) {
     if (c.flat) return &fill_flat<Real, Perspective>;
     if (!c.phong) return &fill_lit<Real, Perspective>;
+    if (c.textured) {
+        return c.per_sample_vectors ? &fill_phong_general<Real, Perspective, true, true>
+                                    : &fill_phong_general<Real, Perspective, false, true>;
+    }
     if (!c.specialized) {
         return c.per_sample_vectors ? &fill_phong_general<Real, Perspective, true>
                                     : &fill_phong_general<Real, Perspective, false>;

@@ -37,6 +37,7 @@ struct FixedTerms {
     static constexpr bool ambient() { return Ambient; }
     static constexpr bool diffuse() { return Diffuse; }
     static constexpr bool specular() { return Specular; }
+    static constexpr bool textured() { return false; }
 };
 /// ... or asked at run time, as the general kernel does.
 struct SelectedTerms {
@@ -44,6 +45,11 @@ struct SelectedTerms {
     bool ambient() const { return lighting.ambient; }
     bool diffuse() const { return lighting.diffuse; }
     bool specular() const { return lighting.specular; }
+    static constexpr bool textured() { return false; }
+};
+/// The general kernel's terms on textured faces: c is multiplied by T(s, t) at the sample.
+struct SelectedTexturedTerms : SelectedTerms {
+    static constexpr bool textured() { return true; }
 };
 
 /// out = a * wa + b * wb + c * wc per lane (glm's order: (w0 a + w1 b) + w2 c).
@@ -92,21 +98,101 @@ inline void power_lanes(int n, const Lanes<Real>& x, Real exponent, Lanes<Real>&
     for (int l = 0; l < n; ++l) out[l] = std::pow(x[l], exponent);
 }
 
-/// The surface colour of each lane into `color`, and out = its ambient term.
+/// A texel index brought into [0, size) as OpenGL's wrap modes do (the
+/// reference's wrap_index() in src/texture.cpp).
+inline long long wrap_texel(long long index, long long size, TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::clamp_to_edge: return index < 0 ? 0 : (index >= size ? size - 1 : index);
+        case TextureWrap::mirrored_repeat: {
+            long long period = index % (2 * size);
+            if (period < 0) period += 2 * size;
+            const long long a = period - size;
+            return (size - 1) - (a >= 0 ? a : -(1 + a));
+        }
+        case TextureWrap::repeat:
+        default: {
+            const long long wrapped = index % size;
+            return wrapped < 0 ? wrapped + size : wrapped;
+        }
+    }
+}
+
+/// T(s, t) in Real: the contract's bilinear lookup (as sample_bilinear()
+/// computes it in double, in the same order), or the nearest texel.
+/// Coordinates too large for Real give T = 1: nothing non-finite reaches a pixel.
+template <typename Real>
+inline Vec3<Real> texture_at(const KernelTexture& texture, Real s, Real t) {
+    const Real x = s * Real(texture.columns) - Real(0.5);
+    const Real y = (Real(1) - t) * Real(texture.rows) - Real(0.5);
+    if (!std::isfinite(x) || !std::isfinite(y)) return Vec3<Real>(Real(1));
+    const long long columns = texture.columns, rows = texture.rows;
+    // Reduced modulo twice the size first, so that no index overflows (every wrap has that period).
+    const auto reduce = [](Real index, long long size) {
+        return static_cast<long long>(std::fmod(index, Real(2) * static_cast<Real>(size)));
+    };
+    const auto texel = [&](long long i, long long j) {
+        return Vec3<Real>(texture.texels[static_cast<std::size_t>(i) * static_cast<std::size_t>(columns) +
+                                         static_cast<std::size_t>(j)]);
+    };
+    if (texture.filter == TextureFilter::nearest) {
+        // The texel whose area holds (s W, (1 - t) H): floor(x + 1/2).
+        const long long j = wrap_texel(reduce(std::floor(x + Real(0.5)), columns), columns, texture.wrap_s);
+        const long long i = wrap_texel(reduce(std::floor(y + Real(0.5)), rows), rows, texture.wrap_t);
+        return texel(i, j);
+    }
+    const Real j_floor = std::floor(x), i_floor = std::floor(y);
+    const Real a = x - j_floor, b = y - i_floor;
+    const long long j0 = wrap_texel(reduce(j_floor, columns), columns, texture.wrap_s);
+    const long long j1 = wrap_texel(reduce(j_floor, columns) + 1, columns, texture.wrap_s);
+    const long long i0 = wrap_texel(reduce(i_floor, rows), rows, texture.wrap_t);
+    const long long i1 = wrap_texel(reduce(i_floor, rows) + 1, rows, texture.wrap_t);
+    const Real one = Real(1);
+    return (one - a) * (one - b) * texel(i0, j0) + a * (one - b) * texel(i0, j1) + (one - a) * b * texel(i1, j0) +
+           a * b * texel(i1, j1);
+}
+
+/// Multiplies each lane's colour by T at its (s, t), which Phong's textured
+/// faces carry in their vertices' `lit` (interpolated like every attribute).
+template <typename Real>
+inline void texture_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const KernelTexture& texture,
+                          Lanes<Real>* color) {
+    if (texture.texels == nullptr) return;  // no texture, or an unreadable one: T = 1
+    Lanes<Real> s, t;
+    interpolate_lanes(n, w, draw.v[0]->lit[0], draw.v[1]->lit[0], draw.v[2]->lit[0], s);
+    interpolate_lanes(n, w, draw.v[0]->lit[1], draw.v[1]->lit[1], draw.v[2]->lit[1], t);
+    for (int l = 0; l < n; ++l) {
+        const Vec3<Real> texel = texture_at<Real>(texture, s[l], t[l]);
+        for (int c = 0; c < 3; ++c) color[c][l] *= texel[c];
+    }
+}
+
+/// The surface colour of each lane into `color` (times T on textured faces), and out = its ambient term.
 template <typename Real, bool UniformColor, typename Terms>
 PHONGRAST_FILL_INLINE void shade_ambient_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w,
                                                const Terms& terms, const FillSetup<Real>& setup,
                                                Lanes<Real>* color, Lanes<Real>* out) {
-    for (int c = 0; c < 3; ++c) {
+    const auto interpolate_color = [&](int c) {
         if (UniformColor) {
             for (int l = 0; l < n; ++l) color[c][l] = setup.color[c];
         } else {
             interpolate_lanes(n, w, draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], color[c]);
         }
+    };
+    const auto ambient = [&](int c) {
         for (int l = 0; l < n; ++l) out[c][l] = Real(0);
         if (terms.ambient()) {
             const Real factor = setup.rig_of(draw).ambient_factor[c];
             for (int l = 0; l < n; ++l) out[c][l] += factor * color[c][l];
+        }
+    };
+    if constexpr (Terms::textured()) {
+        for (int c = 0; c < 3; ++c) interpolate_color(c);
+        texture_lanes(draw, n, w, setup.textures[draw.surface], color);
+        for (int c = 0; c < 3; ++c) ambient(c);
+    } else {
+        for (int c = 0; c < 3; ++c) {
+            interpolate_color(c);
+            ambient(c);
         }
     }
 }

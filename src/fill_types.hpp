@@ -16,6 +16,7 @@
 
 #include "clipping.hpp"
 #include "phongrast/image.hpp"
+#include "phongrast/texture.hpp"
 #include "raster.hpp"
 #include "shading.hpp"
 
@@ -101,6 +102,14 @@ const std::uint32_t* owner_row(const FillTarget<Real>& target, int row) {
     return target.owner + static_cast<std::size_t>(row - target.row_begin) * static_cast<std::size_t>(target.image.columns);
 }
 
+/// A material's texture as the kernels read it (a view of its TextureImage).
+struct KernelTexture {
+    const glm::vec3* texels = nullptr;  ///< rows * columns, row 0 the top row; null: T = 1
+    int rows = 0, columns = 0;
+    TextureWrap wrap_s = TextureWrap::repeat, wrap_t = TextureWrap::repeat;
+    TextureFilter filter = TextureFilter::bilinear;
+};
+
 /// Per-render constants the kernels read.
 template <typename Real>
 struct FillSetup {
@@ -108,6 +117,9 @@ struct FillSetup {
     const LightRig<Real>* rig = nullptr;
     bool uniform_color = true;
     Vec3<Real> color{Real(1)};  ///< the colour of every vertex when uniform_color
+    /// Textured scenes only (the textured kernels): per material, indexed by
+    /// DrawTriangle::surface; (s, t) are in each vertex's `lit`.
+    const KernelTexture* textures = nullptr;
 
     const LightRig<Real>& rig_of(const DrawTriangle<Real>& draw) const { return rig[draw.surface]; }
 };
@@ -124,6 +136,7 @@ struct KernelChoice {
     bool specialized = true;
     bool per_sample_vectors = true;
     bool uniform_color = true;
+    bool textured = false;  ///< some material has a texture: the textured kernels
     EffectSet effects;
 };
 

@@ -26,6 +26,29 @@ void build_surface_shaders(const Scene& scene, const AssembledScene& assembled, 
     }
 }
 
+/// A textured scene: each material's texture as the kernels read it, and
+/// (s, t) of each vertex in its `lit` (Phong reads no lit colour), from
+/// where clipping and the fill interpolate it like every attribute.
+template <typename Real>
+void prepare_textures(const AssembledScene& assembled, const RenderOptions& options, FrameMemory<Real>& memory) {
+    memory.surface_textures.assign(assembled.surfaces.size(), KernelTexture{});
+    for (std::size_t s = 0; s < assembled.surfaces.size(); ++s) {
+        const std::optional<TextureMap>& map = assembled.surfaces[s].texture;
+        if (!map || !map->image) continue;
+        KernelTexture& texture = memory.surface_textures[s];
+        texture.texels = map->image->texels.data();
+        texture.rows = map->image->rows;
+        texture.columns = map->image->columns;
+        texture.wrap_s = map->wrap_s;
+        texture.wrap_t = map->wrap_t;
+        texture.filter = options.texture_filter;
+    }
+    std::vector<Varyings<Real>>& varyings = memory.vertices.varyings;
+    for (std::size_t i = 0; i < varyings.size(); ++i) {
+        varyings[i].lit = Vec3<Real>(Real(assembled.texcoords[i].x), Real(assembled.texcoords[i].y), Real(0));
+    }
+}
+
 }  // namespace
 
 template <typename Real>
@@ -46,7 +69,10 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     // Several materials: each triangle and vertex names its own (assembly).
     const bool several = assembled != nullptr && !assembled->single_surface();
     if (several) build_surface_shaders(scene, *assembled, view, point_shader, memory);
-    FillPlan<Real> fill_plan = plan_fill(scene, options, effects, several ? memory.surface_rigs[0] : memory.rig);
+    const bool textured = assembled != nullptr && assembled->textured();
+    if (textured) prepare_textures(*assembled, options, memory);
+    FillPlan<Real> fill_plan = plan_fill(scene, options, effects, several ? memory.surface_rigs[0] : memory.rig,
+                                         textured ? memory.surface_textures.data() : nullptr);
     if (several) fill_plan.order_free = false;  // one colour per material, not one for all
     const VertexMaterials<Real> vertex_materials{several ? assembled->vertex_surfaces.data() : nullptr,
                                                  several ? memory.surface_shaders.data() : nullptr};

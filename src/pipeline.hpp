@@ -37,6 +37,7 @@ struct FrameMemory {
     /// A scene of several materials: one rig and one shader per material.
     std::vector<LightRig<Real>> surface_rigs;
     std::vector<PointShader<Real>> surface_shaders;
+    std::vector<KernelTexture> surface_textures;  ///< a textured scene: per material
 };
 
 /// What one render pass writes: the image, and the extra outputs `aov_planes`

@@ -39,6 +39,14 @@ struct AssembledScene {
     std::vector<glm::vec2> texcoords;               ///< per render vertex (empty: none in the scene)
 
     bool single_surface() const { return surfaces.size() <= 1; }
+    /// Some material has a texture with an image, and faces with texture coordinates use it.
+    bool textured() const {
+        if (texcoords.empty()) return false;
+        for (const Surface& s : surfaces) {
+            if (s.texture && s.texture->image) return true;
+        }
+        return false;
+    }
 };
 
 /// Whether `scene` needs assembly: it has objects, or its mesh uses a
@@ -51,6 +59,11 @@ bool needs_assembly(const Scene& scene);
 /// std::invalid_argument naming the member ("objects[2].transform: singular").
 /// Kept apart from validate_render_request(), which then checks the assembled scene.
 void validate_scene_objects(const Scene& scene);
+
+/// What textured scenes cannot have yet: a shader other than Phong (flat and
+/// Gouraud's T x A + S is not implemented), or the trilinear filter. Throws
+/// std::invalid_argument naming the field.
+void validate_textured_request(const AssembledScene& assembled, const Scene& scene, const RenderOptions& options);
 
 /// A Renderer's assembly, kept from frame to frame: an objects scene whose
 /// meshes (by address and size), transforms, materials and normal sources

@@ -67,6 +67,20 @@ void check_corner_indices(const std::vector<Triangle>& triples, std::size_t tria
     }
 }
 
+void check_texture(const TextureImage& image, const std::string& member) {
+    if (image.rows < 1 || image.columns < 1 ||
+        image.texels.size() != static_cast<std::size_t>(image.rows) * static_cast<std::size_t>(image.columns)) {
+        fail(member, "image '" + image.name + "' of " + std::to_string(image.rows) + " x " +
+                         std::to_string(image.columns) + " texels holds " + std::to_string(image.texels.size()) +
+                         " (expected rows x columns, at least 1 x 1)");
+    }
+    for (std::size_t i = 0; i < image.texels.size(); ++i) {
+        if (!all_finite(image.texels[i])) {
+            fail(member, "image '" + image.name + "': texel " + std::to_string(i) + " is not finite");
+        }
+    }
+}
+
 void check_mesh(const Mesh& mesh, const std::string& member) {
     try {
         const double any = std::numeric_limits<double>::infinity();
@@ -104,6 +118,7 @@ void check_mesh(const Mesh& mesh, const std::string& member) {
                                  (material.name.empty() ? std::string() : " (" + material.name + ")");
         check_fields(material.coefficients, name);
         if (!all_finite(material.color_factor)) fail(name + ".color_factor", "expected finite numbers");
+        if (material.texture && material.texture->image) check_texture(*material.texture->image, name + ".texture");
     }
 }
 
@@ -125,6 +140,22 @@ void validate_scene_objects(const Scene& scene) {
         check_transform(object.transform, member + ".transform");
         check_fields(object.material, member + ".material");
         check_mesh(*object.mesh, member + ".mesh");
+    }
+}
+
+}  // namespace phongrast::detail
+
+namespace phongrast::detail {
+
+void validate_textured_request(const AssembledScene& assembled, const Scene& scene, const RenderOptions& options) {
+    if (!assembled.textured()) return;
+    if (scene.shader != Shader::phong) {
+        throw std::invalid_argument(std::string("shader: ") + to_string(scene.shader) +
+                                    " does not draw texture maps yet (the phong shader does); "
+                                    "render this textured scene with phong");
+    }
+    if (options.texture_filter == TextureFilter::trilinear) {
+        throw std::invalid_argument("texture_filter: trilinear is not implemented yet; use bilinear or nearest");
     }
 }
 

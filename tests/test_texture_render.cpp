@@ -1,0 +1,322 @@
+// Texture maps (contract "Texture maps"): the bilinear lookup by hand for
+// each wrap mode and the t orientation, then rendered pixels of textured
+// quads against that lookup: a screen-aligned quad (every wrap mode, float
+// and double, clipped at the image border), and a slanted quad where exact
+// mode takes (s, t) perspective-correct and seed mode linearly in screen space.
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "phongrast/render.hpp"
+#include "phongrast/texture.hpp"
+
+using namespace phongrast;
+
+namespace {
+
+/// A texture of `rows` x `columns` texels with distinct values: texel (i, j) = (i, j, i*columns + j) / size.
+std::shared_ptr<const TextureImage> numbered_texture(int rows, int columns) {
+    auto image = std::make_shared<TextureImage>();
+    image->rows = rows;
+    image->columns = columns;
+    image->name = "numbered";
+    const float size = float(rows * columns);
+    for (int i = 0; i < rows; ++i) {
+        for (int j = 0; j < columns; ++j) {
+            image->texels.push_back(glm::vec3(float(i) / float(rows), float(j) / float(columns), float(i * columns + j) / size));
+        }
+    }
+    return image;
+}
+
+TextureMap map_of(std::shared_ptr<const TextureImage> image, TextureWrap s, TextureWrap t) {
+    TextureMap map;
+    map.image = std::move(image);
+    map.wrap_s = s;
+    map.wrap_t = t;
+    return map;
+}
+
+bool near(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
+    return std::abs(a.x - b.x) <= tolerance && std::abs(a.y - b.y) <= tolerance && std::abs(a.z - b.z) <= tolerance;
+}
+
+}  // namespace
+
+TEST_CASE("the bilinear lookup by hand: texel centres, midpoints, and each wrap mode at the border") {
+    const auto image = numbered_texture(2, 2);  // rows 0 (top) and 1 (bottom)
+    const auto texel = [&](int i, int j) { return glm::dvec3(image->at(i, j)); };
+    const TextureMap repeat = map_of(image, TextureWrap::repeat, TextureWrap::repeat);
+    // The centre of texel (row 0, column 0) is s = 1/4, t = 3/4 (t = 0 is the bottom row).
+    CHECK(sample_bilinear(repeat, 0.25, 0.75) == texel(0, 0));
+    CHECK(sample_bilinear(repeat, 0.75, 0.25) == texel(1, 1));
+    CHECK(sample_bilinear(repeat, 0.25, 0.25) == texel(1, 0));
+    // Halfway between all four centres.
+    CHECK(near(sample_bilinear(repeat, 0.5, 0.5), (texel(0, 0) + texel(0, 1) + texel(1, 0) + texel(1, 1)) / 4.0, 1e-15));
+    // s = 0: x = -1/2, halfway between column -1 and column 0.
+    const glm::dvec3 top_left_edge = sample_bilinear(repeat, 0.0, 0.75);
+    CHECK(near(top_left_edge, (texel(0, 1) + texel(0, 0)) / 2.0, 1e-15));  // repeat: column -1 is column 1
+    const TextureMap clamp = map_of(image, TextureWrap::clamp_to_edge, TextureWrap::clamp_to_edge);
+    CHECK(sample_bilinear(clamp, 0.0, 0.75) == texel(0, 0));                 // clamp: column -1 is column 0
+    const TextureMap mirror = map_of(image, TextureWrap::mirrored_repeat, TextureWrap::mirrored_repeat);
+    CHECK(sample_bilinear(mirror, 0.0, 0.75) == texel(0, 0));                // mirror: column -1 is column 0
+    // One texel further out: column -2 (repeat: 0, clamp: 0, mirror: 1) and -1.
+    CHECK(near(sample_bilinear(repeat, -0.5, 0.75), (texel(0, 0) + texel(0, 1)) / 2.0, 1e-15));
+    CHECK(sample_bilinear(clamp, -0.5, 0.75) == texel(0, 0));
+    CHECK(near(sample_bilinear(mirror, -0.5, 0.75), (texel(0, 1) + texel(0, 0)) / 2.0, 1e-15));
+    // s = 1.25 (x = 2): repeat column 0, clamp column 1, mirror column 1 (the period is 2 sizes).
+    CHECK(sample_bilinear(repeat, 1.25, 0.75) == texel(0, 0));
+    CHECK(sample_bilinear(clamp, 1.25, 0.75) == texel(0, 1));
+    CHECK(sample_bilinear(mirror, 1.25, 0.75) == texel(0, 1));
+    // Each axis its own wrap: s repeats, t clamps.
+    const TextureMap mixed = map_of(image, TextureWrap::repeat, TextureWrap::clamp_to_edge);
+    CHECK(sample_bilinear(mixed, 1.25, 1.5) == texel(0, 0));
+    CHECK(sample_bilinear(mixed, 1.25, -0.5) == texel(1, 0));
+    // No image: T = 1.
+    CHECK(sample_bilinear(TextureMap{}, 0.3, 0.4) == glm::dvec3(1.0));
+}
+
+namespace {
+
+/// The camera sees the plane z = 0, [-0.5, 0.5]^2, as exactly the whole image.
+Scene textured_quad_scene(const Mesh& quad, int size) {
+    Scene scene;
+    scene.camera.eye = glm::dvec3(0.0, 0.0, 1.0);
+    scene.camera.lookat = glm::dvec3(0.0);
+    scene.image.rows = scene.image.columns = size;
+    scene.image.background = glm::vec3(-1.0f);
+    scene.material = PhongMaterial{glm::vec3(1.0f), glm::vec3(0.0f), glm::vec3(0.0f), 1.0f};
+    scene.ambient = glm::vec3(1.0f);
+    scene.lighting = Lighting::only_ambient();  // pixel = 1 x 1 x (c = 1) x T: the texel itself
+    scene.mesh = quad;
+    scene.shader = Shader::phong;
+    return scene;
+}
+
+/// A quad with corners `corners` (counter-clockwise seen from +z) and (s, t) at them, textured by `map`.
+Mesh quad(const glm::dvec3 (&corners)[4], const glm::vec2 (&st)[4], const TextureMap& map) {
+    Mesh mesh;
+    for (int k = 0; k < 4; ++k) {
+        mesh.positions.push_back(corners[k]);
+        mesh.texcoords.push_back(st[k]);
+    }
+    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    mesh.texcoord_triangles = mesh.triangles;
+    FaceMaterial material;
+    material.name = "textured";
+    material.texture = map;
+    mesh.materials = {material};
+    mesh.face_materials = {0, 0};
+    return mesh;
+}
+
+}  // namespace
+
+TEST_CASE("a screen-aligned textured quad shows the bilinear lookup at each pixel centre, in every wrap mode") {
+    const auto image = numbered_texture(2, 3);
+    const int size = 12;
+    // The quad overhangs the image (clipped in exact mode); seed mode draws one inside it.
+    for (bool seed : {false, true}) {
+        const double half = seed ? 0.5 : 0.75;
+        const glm::dvec3 corners[4] = {{-half, -half, 0.0}, {half, -half, 0.0}, {half, half, 0.0}, {-half, half, 0.0}};
+        const double s0 = -0.6, s1 = 1.9, t0 = -0.3, t1 = 1.7;  // past the texture on every side
+        const glm::vec2 st[4] = {{float(s0), float(t0)}, {float(s1), float(t0)}, {float(s1), float(t1)}, {float(s0), float(t1)}};
+        for (TextureWrap wrap_s : {TextureWrap::repeat, TextureWrap::clamp_to_edge, TextureWrap::mirrored_repeat}) {
+            for (TextureWrap wrap_t : {TextureWrap::repeat, TextureWrap::clamp_to_edge, TextureWrap::mirrored_repeat}) {
+                const TextureMap map = map_of(image, wrap_s, wrap_t);
+                const Scene scene = textured_quad_scene(quad(corners, st, map), size);
+                for (Precision precision : {Precision::single_float, Precision::double_float}) {
+                    RenderOptions options = seed ? RenderOptions::seed() : RenderOptions::exact();
+                    options.precision = precision;
+                    const Image picture = render(scene, options).image;
+                    INFO(std::string(seed ? "seed" : "exact") << ", s " << to_string(wrap_s) << ", t " << to_string(wrap_t)
+                                                   << (precision == Precision::double_float ? ", double" : ", float"));
+                    int checked = 0, wrong = 0;
+                    for (int i = 0; i < size; ++i) {
+                        for (int j = 0; j < size; ++j) {
+                            const double x = (j + 0.5) / size - 0.5, y = 0.5 - (i + 0.5) / size;
+                            const double s = s0 + (x + half) / (2 * half) * (s1 - s0);
+                            const double t = t0 + (y + half) / (2 * half) * (t1 - t0);
+                            const glm::dvec3 expected = sample_bilinear(map, s, t);
+                            ++checked;
+                            if (!near(glm::dvec3(picture.at(i, j)), expected, 2e-5)) {
+                                ++wrong;
+                                UNSCOPED_INFO("pixel " << i << ", " << j << ": " << picture.at(i, j).x << " "
+                                                       << picture.at(i, j).y << " " << picture.at(i, j).z
+                                                       << " expected " << expected.x << " " << expected.y << " "
+                                                       << expected.z);
+                            }
+                        }
+                    }
+                    CHECK(checked == size * size);
+                    CHECK(wrong == 0);
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("t = 0 is the image's bottom row; nearest takes the texel under the sample") {
+    // Top row red, bottom row blue.
+    auto image = std::make_shared<TextureImage>();
+    image->rows = 2;
+    image->columns = 1;
+    image->texels = {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
+    const TextureMap map = map_of(image, TextureWrap::clamp_to_edge, TextureWrap::clamp_to_edge);
+    const glm::dvec3 corners[4] = {{-0.5, -0.5, 0.0}, {0.5, -0.5, 0.0}, {0.5, 0.5, 0.0}, {-0.5, 0.5, 0.0}};
+    const glm::vec2 st[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};  // OBJ-style: t up
+    const Scene scene = textured_quad_scene(quad(corners, st, map), 8);
+    for (TextureFilter filter : {TextureFilter::bilinear, TextureFilter::nearest}) {
+        RenderOptions options = RenderOptions::exact();
+        options.texture_filter = filter;
+        const Image picture = render(scene, options).image;
+        INFO(to_string(filter));
+        CHECK(picture.at(0, 3) == glm::vec3(1.0f, 0.0f, 0.0f));  // top: row 0 of the texture
+        CHECK(picture.at(7, 3) == glm::vec3(0.0f, 0.0f, 1.0f));  // bottom: row 1
+        if (filter == TextureFilter::nearest) {
+            // Every pixel is one texel: the upper half red, the lower half blue.
+            for (int i = 0; i < 8; ++i) CHECK(picture.at(i, 4) == (i < 4 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1)));
+        } else {
+            // Bilinear blends across the middle: row 3's centre is at texel y = 3.5/8 x 2 - 1/2 = 0.375.
+            CHECK(picture.at(3, 4).x == Approx(0.625).margin(1e-6));
+            CHECK(picture.at(3, 4).z == Approx(0.375).margin(1e-6));
+        }
+    }
+}
+
+TEST_CASE("a slanted quad: exact mode interpolates (s, t) perspective-correct, seed mode linearly on screen") {
+    const auto image = numbered_texture(4, 4);
+    const TextureMap map = map_of(image, TextureWrap::repeat, TextureWrap::repeat);
+    // A square of side 0.8 tilted 60 degrees about x: the far edge is much smaller on screen.
+    const double angle = 1.0471975511965976, side = 0.8;
+    const glm::dvec3 p0(-0.4, -0.25, 0.2), e1(side, 0.0, 0.0), e2(0.0, side * std::cos(angle), -side * std::sin(angle));
+    const glm::dvec3 corners[4] = {p0, p0 + e1, p0 + e1 + e2, p0 + e2};
+    const glm::vec2 st[4] = {{0.0f, 0.0f}, {2.0f, 0.0f}, {2.0f, 2.0f}, {0.0f, 2.0f}};  // st = 2 (u, v)
+    const Mesh mesh = quad(corners, st, map);
+    const int size = 24;
+    const Scene scene = textured_quad_scene(mesh, size);
+    const glm::dvec3 eye = scene.camera.eye;
+    const glm::dvec3 normal = glm::normalize(glm::cross(e1, e2));
+
+    for (bool seed : {false, true}) {
+        RenderOptions options = seed ? RenderOptions::seed() : RenderOptions::exact();
+        options.aovs.id = true;
+        const RenderResult result = render(scene, options);
+        int covered = 0, wrong = 0;
+        double largest_gap = 0.0;  // between the two interpolations, where the pictures differ
+        for (int i = 0; i < size; ++i) {
+            for (int j = 0; j < size; ++j) {
+                const int id = result.aovs.id[std::size_t(i) * size + j];
+                if (id < 0) continue;
+                ++covered;
+                const double x = (j + 0.5) / size - 0.5, y = 0.5 - (i + 0.5) / size;
+                // Exact: the ray through the pixel centre meets the quad's plane at (u, v).
+                const glm::dvec3 direction(x, y, -1.0);
+                const double lambda = glm::dot(p0 - eye, normal) / glm::dot(direction, normal);
+                const glm::dvec3 hit = eye + lambda * direction - p0;
+                const double u = glm::dot(hit, e1) / (side * side), v = glm::dot(hit, e2) / (side * side);
+                const glm::dvec2 exact_st(2.0 * u, 2.0 * v);
+                // Seed: the screen-space barycentric weights of the pixel centre in triangle `id`.
+                glm::dvec2 screen[3];
+                glm::dvec2 corner_st[3];
+                double corner_depth[3];
+                for (int k = 0; k < 3; ++k) {
+                    const std::uint32_t vertex = mesh.triangles[std::size_t(id)][k];
+                    const glm::dvec3 p = mesh.positions[vertex];
+                    const double depth = eye.z - p.z;
+                    // Snapped to 1/256 of a pixel, as the rasteriser does before it interpolates.
+                    screen[k] = glm::round(glm::dvec2((p.x / depth + 0.5) * size, (0.5 - p.y / depth) * size) * 256.0) /
+                                256.0;
+                    corner_depth[k] = depth;
+                    corner_st[k] = glm::dvec2(mesh.texcoords[vertex]);
+                }
+                const glm::dvec2 centre(j + 0.5, i + 0.5);
+                const auto area = [](glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+                    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+                };
+                const double whole = area(screen[0], screen[1], screen[2]);
+                const double w0 = area(centre, screen[1], screen[2]) / whole;
+                const double w1 = area(screen[0], centre, screen[2]) / whole;
+                const double w2 = 1.0 - w0 - w1;
+                const glm::dvec2 seed_st = w0 * corner_st[0] + w1 * corner_st[1] + w2 * corner_st[2];
+                // Exact mode: the same weights divided by depth, renormalised (perspective-correct on the
+                // snapped triangle); within snapping of the ray's hit.
+                const double q0 = w0 / corner_depth[0], q1 = w1 / corner_depth[1], q2 = w2 / corner_depth[2];
+                const glm::dvec2 perspective_st = (q0 * corner_st[0] + q1 * corner_st[1] + q2 * corner_st[2]) / (q0 + q1 + q2);
+                if (glm::length(perspective_st - exact_st) > 2e-3) ++wrong;
+                const glm::dvec2 used = seed ? seed_st : perspective_st;
+                largest_gap = std::max(largest_gap, glm::length(seed_st - exact_st));
+                const glm::dvec3 expected = sample_bilinear(map, used.x, used.y);
+                if (!near(glm::dvec3(result.image.at(i, j)), expected, 1e-4)) {
+                    ++wrong;
+                    if (wrong < 5) {
+                        WARN("pixel " << i << ", " << j << " st " << used.x << " " << used.y << " got "
+                                      << result.image.at(i, j).x << " " << result.image.at(i, j).y << " "
+                                      << result.image.at(i, j).z << " expected " << expected.x << " " << expected.y
+                                      << " " << expected.z);
+                    }
+                }
+            }
+        }
+        INFO((seed ? "seed" : "exact"));
+        CHECK(covered > 150);
+        CHECK(wrong == 0);
+        CHECK(largest_gap > 0.1);  // the two interpolations really differ on this quad
+    }
+}
+
+TEST_CASE("supersampling averages textured samples; faces without texture coordinates have T = 1") {
+    const auto image = numbered_texture(3, 3);
+    const TextureMap map = map_of(image, TextureWrap::repeat, TextureWrap::repeat);
+    const glm::dvec3 corners[4] = {{-0.5, -0.5, 0.0}, {0.5, -0.5, 0.0}, {0.5, 0.5, 0.0}, {-0.5, 0.5, 0.0}};
+    const glm::vec2 st[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
+    Mesh mesh = quad(corners, st, map);
+    Scene scene = textured_quad_scene(mesh, 6);
+    RenderOptions options = RenderOptions::exact();
+    options.samples_per_axis = 2;
+    const Image pixels = render(scene, options).image;
+    Scene large = scene;
+    large.image.rows = large.image.columns = 12;
+    const Image samples = render(large, RenderOptions::exact()).image;
+    for (int i = 0; i < 6; ++i) {
+        for (int j = 0; j < 6; ++j) {
+            const glm::vec3 sum = samples.at(2 * i, 2 * j) + samples.at(2 * i, 2 * j + 1) + samples.at(2 * i + 1, 2 * j) +
+                                  samples.at(2 * i + 1, 2 * j + 1);
+            CHECK(pixels.at(i, j) == sum * 0.25f);
+        }
+    }
+    // The second triangle loses a corner's (s, t): it draws with T = 1, the first stays textured.
+    mesh.texcoord_triangles[1][2] = kNoIndex;
+    scene.mesh = mesh;
+    options.samples_per_axis = 1;
+    options.aovs.id = true;
+    const RenderResult result = render(scene, options);
+    for (std::size_t p = 0; p < result.image.pixels.size(); ++p) {
+        if (result.aovs.id[p] == 1) CHECK(result.image.pixels[p] == glm::vec3(1.0f));
+    }
+    CHECK(result.image.at(5, 4) != glm::vec3(1.0f));  // lower right: triangle 0, textured
+}
+
+TEST_CASE("what textured scenes cannot do yet is refused, naming the field") {
+    const auto image = numbered_texture(2, 2);
+    const glm::dvec3 corners[4] = {{-0.5, -0.5, 0.0}, {0.5, -0.5, 0.0}, {0.5, 0.5, 0.0}, {-0.5, 0.5, 0.0}};
+    const glm::vec2 st[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
+    Scene scene = textured_quad_scene(quad(corners, st, map_of(image, TextureWrap::repeat, TextureWrap::repeat)), 4);
+    scene.shader = Shader::gouraud;
+    CHECK_THROWS_WITH(render(scene, RenderOptions::exact()), Catch::StartsWith("shader: gouraud"));
+    scene.shader = Shader::phong;
+    RenderOptions options = RenderOptions::exact();
+    options.texture_filter = TextureFilter::trilinear;
+    CHECK_THROWS_WITH(render(scene, options), Catch::StartsWith("texture_filter: trilinear"));
+    // A texture image whose size does not match its texels.
+    auto broken = std::make_shared<TextureImage>(*image);
+    broken->texels.pop_back();
+    scene.mesh.materials[0].texture->image = broken;
+    CHECK_THROWS_WITH(render(scene, RenderOptions::exact()), Catch::StartsWith("mesh.materials[0] (textured).texture"));
+}
