@@ -223,6 +223,24 @@ void fill_flat(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVe
     fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
 }
 
+/// Flat on a textured face: the triangle's colour-carrying part A (lit[0])
+/// times T at the sample, plus its specular part S (lit[1]). A face without
+/// a texture writes its one colour as fill_flat() does (set-up put it in lit[0]).
+template <typename Real, bool Perspective>
+void fill_flat_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+                        const FillSetup<Real>& setup) {
+    const KernelTexture& texture = setup.textures[draw.surface];
+    if (texture.texels == nullptr) {
+        fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
+        return;
+    }
+    fill_samples<Real, Perspective>(draw, target, [&](const Real* w) {
+        const Real s = (w[0] * draw.v[0]->lit[0] + w[1] * draw.v[1]->lit[0]) + w[2] * draw.v[2]->lit[0];
+        const Real t = (w[0] * draw.v[0]->lit[1] + w[1] * draw.v[1]->lit[1]) + w[2] * draw.v[2]->lit[1];
+        return texture_at<Real>(texture, s, t) * draw.lit[0] + draw.lit[1];
+    });
+}
+
 /// Visits the triangle's covered samples in the target's rows, gathering up
 /// to kSampleBatch of them (across rows) with their weights as fill_samples
 /// computes them, then calls shade_batch(n, w, out) and writes the batch.
@@ -358,7 +376,7 @@ FillKernel<Real> pick_phong_vectors_color(const KernelChoice& c) {
 
 template <typename Real, bool Perspective>
 FillKernel<Real> pick_kernel_for_projection(const KernelChoice& c) {
-    if (c.flat) return &fill_flat<Real, Perspective>;
+    if (c.flat) return c.textured ? &fill_flat_textured<Real, Perspective> : &fill_flat<Real, Perspective>;
     if (!c.phong) return &fill_lit<Real, Perspective>;
     if (c.textured) {
         return c.per_sample_vectors ? &fill_phong_general<Real, Perspective, true, true>

@@ -49,6 +49,29 @@ void prepare_textures(const AssembledScene& assembled, const RenderOptions& opti
     }
 }
 
+/// Flat on textured faces lights A and S apart (contract "Texture maps"):
+/// each material's rig without its specular coefficient, and with only it.
+template <typename Real>
+void build_part_shaders(const Scene& scene, const AssembledScene& assembled, const View& view,
+                        const PointShader<Real>& point_shader, FrameMemory<Real>& memory) {
+    const std::size_t count = assembled.surfaces.size();
+    memory.colour_part_rigs.resize(count);
+    memory.specular_part_rigs.resize(count);
+    memory.colour_part_shaders.resize(count);
+    memory.specular_part_shaders.resize(count);
+    for (std::size_t s = 0; s < count; ++s) {
+        PhongMaterial colour_part = assembled.surfaces[s].material, specular_part = colour_part;
+        colour_part.ks = glm::vec3(0.0f);
+        specular_part.ka = specular_part.kd = glm::vec3(0.0f);
+        build_light_rig(scene, colour_part, view.frame, memory.colour_part_rigs[s]);
+        build_light_rig(scene, specular_part, view.frame, memory.specular_part_rigs[s]);
+        memory.colour_part_shaders[s] = point_shader;
+        memory.colour_part_shaders[s].rig = &memory.colour_part_rigs[s];
+        memory.specular_part_shaders[s] = point_shader;
+        memory.specular_part_shaders[s].rig = &memory.specular_part_rigs[s];
+    }
+}
+
 }  // namespace
 
 template <typename Real>
@@ -71,6 +94,8 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     if (several) build_surface_shaders(scene, *assembled, view, point_shader, memory);
     const bool textured = assembled != nullptr && assembled->textured();
     if (textured) prepare_textures(*assembled, options, memory);
+    const bool textured_flat = textured && scene.shader == Shader::flat;
+    if (textured_flat) build_part_shaders(scene, *assembled, view, point_shader, memory);
     FillPlan<Real> fill_plan = plan_fill(scene, options, effects, several ? memory.surface_rigs[0] : memory.rig,
                                          textured ? memory.surface_textures.data() : nullptr);
     if (several) fill_plan.order_free = false;  // one colour per material, not one for all
@@ -91,7 +116,10 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                  point_shader,
                                  fill_plan.setup,
                                  several ? assembled->triangle_surfaces.data() : nullptr,
-                                 several ? memory.surface_shaders.data() : nullptr};
+                                 several ? memory.surface_shaders.data() : nullptr,
+                                 textured_flat ? memory.surface_textures.data() : nullptr,
+                                 textured_flat ? memory.colour_part_shaders.data() : nullptr,
+                                 textured_flat ? memory.specular_part_shaders.data() : nullptr};
     set_up_triangles(setup, memory.draws, stats, progress);
     const bool sort = !fill_plan.order_free || out.aov_planes.any();  // depth and id name the last triangle
     painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, sort, memory.painter,

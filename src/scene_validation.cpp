@@ -149,10 +149,9 @@ namespace phongrast::detail {
 
 void validate_textured_request(const AssembledScene& assembled, const Scene& scene, const RenderOptions& options) {
     if (!assembled.textured()) return;
-    if (scene.shader != Shader::phong) {
-        throw std::invalid_argument(std::string("shader: ") + to_string(scene.shader) +
-                                    " does not draw texture maps yet (the phong shader does); "
-                                    "render this textured scene with phong");
+    if (scene.shader == Shader::gouraud) {
+        throw std::invalid_argument("shader: gouraud does not draw texture maps yet (phong and flat do); "
+                                    "render this textured scene with phong or flat");
     }
     if (options.texture_filter == TextureFilter::trilinear) {
         throw std::invalid_argument("texture_filter: trilinear is not implemented yet; use bilinear or nearest");

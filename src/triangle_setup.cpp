@@ -81,10 +81,21 @@ public:
         if (outcome.drawn && in_.scene.shader == Shader::flat) {
             // Lit only once something is to be drawn: clipped-away and
             // degenerate triangles cost no lighting.
-            const Vec3<Real> lit = same_lit_ ? *same_lit_ : flat_color(tri, centroid);
             ++counts_.lit_points;
-            for (std::size_t d = first_draw; d < out_.size(); ++d) {
-                for (Vec3<Real>& corner_lit : out_[d].lit) corner_lit = lit;
+            if (in_.textures != nullptr && in_.textures[surface_].texels != nullptr) {
+                // Textured: A and S apart, for the fill's T x A + S.
+                const Vec3<Real> colour_part = flat_color(tri, centroid, in_.colour_part_shaders[surface_]);
+                const Vec3<Real> specular_part = flat_color(tri, centroid, in_.specular_part_shaders[surface_]);
+                for (std::size_t d = first_draw; d < out_.size(); ++d) {
+                    out_[d].lit[0] = colour_part;
+                    out_[d].lit[1] = specular_part;
+                    out_[d].lit[2] = Vec3<Real>(Real(0));
+                }
+            } else {
+                const Vec3<Real> lit = same_lit_ ? *same_lit_ : flat_color(tri, centroid, shader());
+                for (std::size_t d = first_draw; d < out_.size(); ++d) {
+                    for (Vec3<Real>& corner_lit : out_[d].lit) corner_lit = lit;
+                }
             }
         }
         count(outcome);
@@ -242,21 +253,22 @@ private:
     /// computes exactly this at every vertex, corner and centroid. Flat and
     /// Gouraud's corners then take it without reading any vertex.
     std::optional<Vec3<Real>> same_lit_everywhere() const {
-        if (in_.triangle_surfaces != nullptr) return std::nullopt;  // one colour per material: lit per triangle
+        // One colour per material, or A and S apart on textured faces: lit per triangle.
+        if (in_.triangle_surfaces != nullptr || in_.textures != nullptr) return std::nullopt;
         if (!in_.shader.specialized || in_.shader.effects.normals || !in_.fill.uniform_color) return std::nullopt;
         return in_.shader.shade_prepared(vectors_, Vec3<Real>(Real(0)), in_.fill.color);
     }
 
     // Flat: one colour per triangle, lit at the centroid with the mean vertex
     // normal (renormalised) and the mean vertex colour.
-    Vec3<Real> flat_color(const Triangle& tri, const Vec3<Real>& centroid) const {
+    Vec3<Real> flat_color(const Triangle& tri, const Vec3<Real>& centroid, const PointShader<Real>& lighting) const {
         Vec3<Real> normal(Real(0)), color(Real(0));
         for (std::uint32_t index : tri) {
             normal += vertices_.varyings[index].normal;
             color += vertices_.varyings[index].color;
         }
         const Vec3<Real> surface = in_.fill.uniform_color ? in_.fill.color : color / Real(3);
-        return shader()(vectors_, centroid, safe_normalize<Real>(normal), surface);
+        return lighting(vectors_, centroid, safe_normalize<Real>(normal), surface);
     }
 
     // Gouraud with the seed's centroid vectors: lights the triangle's own

@@ -117,6 +117,13 @@ struct SetupInput {
     /// per material (same effects, its own rig). Null: `shader` for every triangle.
     const std::uint32_t* triangle_surfaces = nullptr;
     const PointShader<Real>* surface_shaders = nullptr;
+    /// A textured scene drawn flat: per material, its texture (null
+    /// otherwise), and the shaders of the colour-carrying part A (ks = 0) and
+    /// of the specular part S (ka = kd = 0) that a textured face's draw
+    /// carries in lit[0] and lit[1].
+    const KernelTexture* textures = nullptr;
+    const PointShader<Real>* colour_part_shaders = nullptr;
+    const PointShader<Real>* specular_part_shaders = nullptr;
 };
 
 /// Sets up every triangle of the mesh, in mesh order, into `draws` and adds

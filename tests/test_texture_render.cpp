@@ -310,6 +310,8 @@ TEST_CASE("what textured scenes cannot do yet is refused, naming the field") {
     Scene scene = textured_quad_scene(quad(corners, st, map_of(image, TextureWrap::repeat, TextureWrap::repeat)), 4);
     scene.shader = Shader::gouraud;
     CHECK_THROWS_WITH(render(scene, RenderOptions::exact()), Catch::StartsWith("shader: gouraud"));
+    scene.shader = Shader::flat;
+    CHECK_NOTHROW(render(scene, RenderOptions::exact()));
     scene.shader = Shader::phong;
     RenderOptions options = RenderOptions::exact();
     options.texture_filter = TextureFilter::trilinear;
@@ -319,4 +321,47 @@ TEST_CASE("what textured scenes cannot do yet is refused, naming the field") {
     broken->texels.pop_back();
     scene.mesh.materials[0].texture->image = broken;
     CHECK_THROWS_WITH(render(scene, RenderOptions::exact()), Catch::StartsWith("mesh.materials[0] (textured).texture"));
+}
+
+TEST_CASE("flat shading of a textured face: T at the sample times A, plus S, both lit once per triangle") {
+    const auto image = numbered_texture(3, 4);
+    const TextureMap map = map_of(image, TextureWrap::mirrored_repeat, TextureWrap::repeat);
+    const glm::dvec3 corners[4] = {{-0.5, -0.5, 0.0}, {0.5, -0.5, 0.0}, {0.5, 0.5, 0.0}, {-0.5, 0.5, 0.0}};
+    const glm::vec2 st[4] = {{-0.5f, 0.0f}, {1.5f, 0.0f}, {1.5f, 2.0f}, {-0.5f, 2.0f}};
+    const int size = 16;
+    Scene textured = textured_quad_scene(quad(corners, st, map), size);
+    textured.shader = Shader::flat;
+    textured.lighting = Lighting::full();
+    textured.ambient = glm::vec3(0.2f);
+    textured.material = PhongMaterial{glm::vec3(0.3f), glm::vec3(0.6f, 0.5f, 0.4f), glm::vec3(0.5f), 8.0f};
+    textured.lights = {PointLight{glm::dvec3(0.3, 0.4, 0.6), glm::vec3(1.0f, 0.9f, 0.8f)}};
+    // The same quad untextured, lit without ks (A) and with only ks (S): flat writes each triangle's value.
+    Scene colour_part = textured;
+    colour_part.mesh.materials.clear();
+    colour_part.mesh.face_materials.clear();
+    colour_part.mesh.texcoords.clear();
+    colour_part.mesh.texcoord_triangles.clear();
+    Scene specular_part = colour_part;
+    colour_part.material.ks = glm::vec3(0.0f);
+    specular_part.material.ka = specular_part.material.kd = glm::vec3(0.0f);
+    for (bool seed : {false, true}) {
+        const RenderOptions options = seed ? RenderOptions::seed() : RenderOptions::exact();
+        const Image picture = render(textured, options).image;
+        const Image a = render(colour_part, options).image;
+        const Image s_part = render(specular_part, options).image;
+        int wrong = 0;
+        double specular_seen = 0.0;
+        for (int i = 0; i < size; ++i) {
+            for (int j = 0; j < size; ++j) {
+                const double x = (j + 0.5) / size - 0.5, y = 0.5 - (i + 0.5) / size;
+                const glm::dvec3 texel = sample_bilinear(map, -0.5 + (x + 0.5) * 2.0, (y + 0.5) * 2.0);
+                const glm::dvec3 expected = texel * glm::dvec3(a.at(i, j)) + glm::dvec3(s_part.at(i, j));
+                specular_seen = std::max(specular_seen, double(s_part.at(i, j).x));
+                if (!near(glm::dvec3(picture.at(i, j)), expected, 2e-5)) ++wrong;
+            }
+        }
+        INFO((seed ? "seed" : "exact"));
+        CHECK(wrong == 0);
+        CHECK(specular_seen > 0.01);  // the split is tested with a real highlight
+    }
 }
