@@ -21,11 +21,13 @@ AovRequest parse_aovs(std::string_view text) {
             request.id = true;
         } else if (part == "alpha") {
             request.alpha = true;
+        } else if (part == "uv") {
+            request.uv = true;
         } else if (part == "all") {
             request = AovRequest::all();
         } else {
             throw std::invalid_argument("aov: unknown output '" + std::string(part) + "' in '" + std::string(text) +
-                                        "'; expected depth, normal, id, alpha or all, joined with ','");
+                                        "'; expected depth, normal, id, alpha, uv or all, joined with ','");
         }
         if (comma == std::string_view::npos) break;
         start = comma + 1;
@@ -44,6 +46,7 @@ std::string to_string(const AovRequest& request) {
     append(request.normal, "normal");
     append(request.id, "id");
     append(request.alpha, "alpha");
+    append(request.uv, "uv");
     return names.empty() ? "none" : names;
 }
 

@@ -65,6 +65,13 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
                 out.depth[index] = static_cast<float>(surface_depth);
             }
             if (planes.id) out.id[index] = static_cast<std::int32_t>(source);
+            if (planes.uv && in.uv_in_lit) {
+                // As the textured kernels interpolate it: (w0 a + w1 b) + w2 c.
+                for (int c = 0; c < 2; ++c) {
+                    out.uv[index][c] = static_cast<float>((w[0] * draw.v[0]->lit[c] + w[1] * draw.v[1]->lit[c]) +
+                                                          w[2] * draw.v[2]->lit[c]);
+                }
+            }
             if (planes.normal) {
                 out.normal[index] =
                     in.shader == Shader::flat
@@ -87,6 +94,7 @@ void AovSamples::reset(int rows_, int columns_, const AovRequest& planes) {
     depth.assign(planes.depth ? count : 0, kBackgroundDepth);
     normal.assign(planes.normal ? count : 0, glm::vec3(0.0f));
     id.assign(planes.id ? count : 0, -1);
+    uv.assign(planes.uv ? count : 0, glm::vec2(0.0f));
 }
 
 template <typename Real>
@@ -117,7 +125,7 @@ template void run_aov_pass<double>(const AovPassInput<double>&, const AovRequest
 
 AovRequest sample_planes_for(const AovRequest& requested, int factor) {
     AovRequest planes = requested;
-    if (factor > 1 && (requested.normal || requested.id)) planes.depth = true;
+    if (factor > 1 && (requested.normal || requested.id || requested.uv)) planes.depth = true;
     return planes;
 }
 
@@ -128,6 +136,7 @@ void reset_aov_planes(int rows, int columns, const AovRequest& planes, AovPlanes
     out.depth.assign(planes.depth ? count : 0, kBackgroundDepth);
     out.normal.assign(planes.normal ? count : 0, glm::vec3(0.0f));
     out.id.assign(planes.id ? count : 0, -1);
+    out.uv.assign(planes.uv ? count : 0, glm::vec2(0.0f));
     out.alpha.assign(planes.alpha ? count : 0, 0.0f);
 }
 
@@ -159,6 +168,7 @@ void resolve_aovs(const AovSamples& samples, int factor, const AovRequest& plane
             if (planes.depth) out.depth[pixel] = samples.depth[chosen];
             if (planes.normal) out.normal[pixel] = samples.normal[chosen];
             if (planes.id) out.id[pixel] = samples.id[chosen];
+            if (planes.uv) out.uv[pixel] = samples.uv[chosen];
         }
     }
 }

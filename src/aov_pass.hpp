@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "binning.hpp"
@@ -28,6 +29,7 @@ struct AovSamples {
     std::vector<glm::vec3> normal;     ///< world space, unit (or zero)
     std::vector<std::int32_t> id;      ///< source triangle, -1 where nothing painted
     std::vector<std::uint8_t> covered; ///< 1 where some triangle covers the sample
+    std::vector<glm::vec2> uv;         ///< (s, t); zero where nothing painted
 
     /// Sized for rows x columns with the planes `planes` asks for, all background; memory reused.
     void reset(int rows, int columns, const AovRequest& planes);
@@ -43,6 +45,9 @@ struct AovPassInput {
     const std::vector<Triangle>* triangles = nullptr;
     const std::vector<Varyings<Real>>* vertices = nullptr;  ///< camera-space varyings, by mesh vertex
     const CameraFrame* frame = nullptr;
+    /// The vertices' (s, t) is in their `lit` (Phong and flat of a scene with
+    /// texture coordinates): the uv plane interpolates it; else it stays zero.
+    bool uv_in_lit = false;
 };
 
 /// Fills `out` (already reset) for every band, in parallel over bands.

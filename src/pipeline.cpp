@@ -43,6 +43,11 @@ void prepare_textures(const AssembledScene& assembled, const RenderOptions& opti
         texture.wrap_t = map->wrap_t;
         texture.filter = options.texture_filter;
     }
+}
+
+/// (s, t) of each vertex into its `lit`, which Phong and flat do not otherwise read.
+template <typename Real>
+void put_texcoords_in_lit(const AssembledScene& assembled, FrameMemory<Real>& memory) {
     std::vector<Varyings<Real>>& varyings = memory.vertices.varyings;
     for (std::size_t i = 0; i < varyings.size(); ++i) {
         varyings[i].lit = Vec3<Real>(Real(assembled.texcoords[i].x), Real(assembled.texcoords[i].y), Real(0));
@@ -94,6 +99,10 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     if (several) build_surface_shaders(scene, *assembled, view, point_shader, memory);
     const bool textured = assembled != nullptr && assembled->textured();
     if (textured) prepare_textures(*assembled, options, memory);
+    // Gouraud's `lit` is its lit colour (and it draws no texture yet).
+    const bool texcoords_in_lit =
+        assembled != nullptr && !assembled->texcoords.empty() && scene.shader != Shader::gouraud;
+    if (texcoords_in_lit) put_texcoords_in_lit(*assembled, memory);
     const bool textured_flat = textured && scene.shader == Shader::flat;
     if (textured_flat) build_part_shaders(scene, *assembled, view, point_shader, memory);
     FillPlan<Real> fill_plan = plan_fill(scene, options, effects, several ? memory.surface_rigs[0] : memory.rig,
@@ -135,7 +144,8 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
         const AovPassInput<Real> aov_input{&memory.bins, scene.shader,
                                            options.interpolation == Interpolation::perspective_correct,
                                            fill_plan.depth_test ? memory.fill.depth_buffer.data() : nullptr,
-                                           &scene.mesh.triangles, &memory.vertices.varyings, &view.frame};
+                                           &scene.mesh.triangles, &memory.vertices.varyings, &view.frame,
+                                           texcoords_in_lit};
         run_aov_pass(aov_input, out.aov_planes, out.aovs, progress);
     }
 }

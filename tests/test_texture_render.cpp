@@ -365,3 +365,40 @@ TEST_CASE("flat shading of a textured face: T at the sample times A, plus S, bot
         CHECK(specular_seen > 0.01);  // the split is tested with a real highlight
     }
 }
+
+TEST_CASE("the uv output: (s, t) at each pixel, interpolated as the shading interpolates it") {
+    const auto image = numbered_texture(2, 2);
+    const glm::dvec3 corners[4] = {{-0.5, -0.5, 0.0}, {0.5, -0.5, 0.0}, {0.5, 0.5, 0.0}, {-0.5, 0.5, 0.0}};
+    const glm::vec2 st[4] = {{0.0f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}, {0.0f, 1.0f}};
+    const int size = 10;
+    Scene scene = textured_quad_scene(quad(corners, st, map_of(image, TextureWrap::repeat, TextureWrap::repeat)), size);
+    scene.mesh.triangles[1] = {0, 2, 3};
+    scene.mesh.positions[3] = glm::dvec3(-0.5, 0.3, 0.0);  // the second triangle no longer reaches the top: background there
+    for (Shader shader : {Shader::phong, Shader::flat}) {
+        scene.shader = shader;
+        RenderOptions options = RenderOptions::exact();
+        options.aovs.uv = true;
+        options.aovs.id = true;
+        const RenderResult result = render(scene, options);
+        REQUIRE(result.aovs.uv.size() == std::size_t(size * size));
+        int background = 0;
+        for (int i = 0; i < size; ++i) {
+            for (int j = 0; j < size; ++j) {
+                const std::size_t p = std::size_t(i) * size + std::size_t(j);
+                const glm::vec2 uv = result.aovs.uv[p];
+                if (result.aovs.id[p] < 0) {
+                    ++background;
+                    CHECK(uv == glm::vec2(0.0f));
+                } else if (result.aovs.id[p] == 0) {
+                    // Triangle 0 is the lower-right half of the square: s = 2 (x + 1/2), t = y + 1/2.
+                    const double x = (j + 0.5) / size - 0.5, y = 0.5 - (i + 0.5) / size;
+                    CHECK(uv.x == Approx(2.0 * (x + 0.5)).margin(1e-5));
+                    CHECK(uv.y == Approx(y + 0.5).margin(1e-5));
+                }
+            }
+        }
+        CHECK(background > 0);
+    }
+    CHECK(parse_aovs("uv").uv);
+    CHECK(to_string(AovRequest::all()) == "depth,normal,id,alpha,uv");
+}

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace phongrast {
@@ -20,9 +21,10 @@ struct AovRequest {
     bool normal = false;  ///< unit world-space shading normal there
     bool id = false;      ///< index of the mesh triangle that paints the sample
     bool alpha = false;   ///< covered fraction of the pixel's samples
+    bool uv = false;      ///< texture coordinates (s, t) of the surface that paints the sample
 
-    bool any() const { return depth || normal || id || alpha; }
-    static AovRequest all() { return {true, true, true, true}; }
+    bool any() const { return depth || normal || id || alpha || uv; }
+    static AovRequest all() { return {true, true, true, true, true}; }
 };
 
 /// "depth,normal,id,alpha" (any subset, comma-separated, or "all"); throws
@@ -55,6 +57,12 @@ struct AovPlanes {
     std::vector<std::int32_t> id;
     /// Covered fraction of the pixel's samples, from 0 to 1 (exact multiples of 1 / samples).
     std::vector<float> alpha;
+    /// Texture coordinates (s, t) (t = 0 at a texture's bottom row) of the
+    /// surface the depth and id come from, interpolated as the shading
+    /// interpolates them (perspective-correct in exact mode). Zero on the
+    /// background, on faces without texture coordinates, and with the Gouraud
+    /// shader (not yet carried there).
+    std::vector<glm::vec2> uv;
 };
 
 }  // namespace phongrast

@@ -49,6 +49,7 @@ void write_exr_with_aovs(const Image& image, const AovPlanes& aovs, const std::s
     require_plane_size(aovs.depth.size(), image, path, "depth");
     require_plane_size(aovs.normal.size(), image, path, "normal");
     require_plane_size(aovs.id.size(), image, path, "id");
+    require_plane_size(aovs.uv.size(), image, path, "uv");
 
     // Channel names and where each value comes from; every channel is 4 bytes wide.
     std::vector<std::string> names;
@@ -64,6 +65,9 @@ void write_exr_with_aovs(const Image& image, const AovPlanes& aovs, const std::s
         for (const char* name : {"N.X", "N.Y", "N.Z"}) add_channel(name, OIIO::TypeDesc::FLOAT);
     }
     if (!aovs.id.empty()) add_channel("id", OIIO::TypeDesc::UINT);
+    if (!aovs.uv.empty()) {
+        for (const char* name : {"uv.s", "uv.t"}) add_channel(name, OIIO::TypeDesc::FLOAT);
+    }
     const std::size_t channels = names.size();
     std::vector<std::uint32_t> words(image.pixels.size() * channels);  // raw 4-byte values, channel-interleaved
     const auto bits = [](float value) {
@@ -80,6 +84,9 @@ void write_exr_with_aovs(const Image& image, const AovPlanes& aovs, const std::s
             for (int c = 0; c < 3; ++c) *out++ = bits(aovs.normal[p][c]);
         }
         if (!aovs.id.empty()) *out++ = static_cast<std::uint32_t>(aovs.id[p]);
+        if (!aovs.uv.empty()) {
+            for (int c = 0; c < 2; ++c) *out++ = bits(aovs.uv[p][c]);
+        }
     }
 
     OIIO::ImageSpec spec(image.columns, image.rows, static_cast<int>(channels), OIIO::TypeDesc::FLOAT);
@@ -140,6 +147,13 @@ void read_exr_with_aovs(const std::string& path, Image& image, AovPlanes& aovs) 
         }
         aovs.id.resize(pixels);
         for (std::size_t p = 0; p < pixels; ++p) aovs.id[p] = static_cast<std::int32_t>(ids[p]);
+    }
+    if (channel("uv.s") >= 0 && channel("uv.t") >= 0) {
+        aovs.uv.resize(pixels);
+        for (int c = 0; c < 2; ++c) {
+            read_float(channel(std::string("uv.") + "st"[c]), values);
+            for (std::size_t p = 0; p < pixels; ++p) aovs.uv[p][c] = values[p];
+        }
     }
 }
 
