@@ -1,0 +1,83 @@
+// bench_texture_cost: what a texture map costs. A 1024 x 1024 Phong render
+// (exact mode, two lights) of a ~100k-triangle sphere textured with a
+// 1024 x 1024 image (spherical (s, t), bilinear and nearest), against the same
+// sphere untextured (a version-1 mesh), in interleaved rounds in one process
+// so a change in the machine's load hits every contender alike. Prints one
+// Markdown row per contender: median milliseconds and the ratio to untextured.
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "phongrast/render.hpp"
+#include "support/meshes.hpp"
+#include "support/timing.hpp"
+
+namespace {
+
+using namespace phongrast;
+
+std::shared_ptr<const TextureImage> procedural_texture(int size) {
+    auto image = std::make_shared<TextureImage>();
+    image->rows = image->columns = size;
+    image->name = "procedural";
+    image->texels.reserve(static_cast<std::size_t>(size) * static_cast<std::size_t>(size));
+    for (int i = 0; i < size; ++i) {
+        for (int j = 0; j < size; ++j) {
+            const bool check = ((i / 32) + (j / 32)) % 2 == 0;
+            image->texels.push_back(glm::vec3(check ? 0.9f : 0.3f, float(i) / float(size), float(j) / float(size)));
+        }
+    }
+    return image;
+}
+
+Scene sphere_scene(const Mesh& mesh) {
+    Scene scene;
+    scene.mesh = mesh;
+    scene.camera.eye = glm::dvec3(0.0, 0.0, 2.6);
+    scene.camera.lookat = glm::dvec3(0.0);
+    scene.image.rows = scene.image.columns = 1024;
+    scene.material = PhongMaterial{glm::vec3(0.1f), glm::vec3(0.8f), glm::vec3(0.5f), 16.0f};
+    scene.lights = {PointLight{glm::dvec3(3.0, 4.0, 5.0), glm::vec3(1.0f)},
+                    PointLight{glm::dvec3(-4.0, 1.0, 3.0), glm::vec3(0.4f, 0.5f, 0.7f)}};
+    scene.shader = Shader::phong;
+    return scene;
+}
+
+}  // namespace
+
+int main() {
+    const Mesh sphere = support::icosphere(71);  // 100,820 triangles
+    Mesh textured = sphere;
+    constexpr double kPi = 3.14159265358979323846;
+    for (const glm::dvec3& p : sphere.positions) {
+        const glm::dvec3 n = glm::normalize(p);
+        textured.texcoords.push_back(
+            glm::vec2(float(0.5 + std::atan2(n.z, n.x) / (2.0 * kPi)), float(0.5 + std::asin(n.y) / kPi)));
+    }
+    textured.texcoord_triangles = sphere.triangles;
+    FaceMaterial material;
+    material.name = "procedural";
+    material.texture = TextureMap{procedural_texture(1024), TextureWrap::repeat, TextureWrap::repeat};
+    textured.materials = {material};
+    textured.face_materials.assign(sphere.triangles.size(), 0);
+
+    const Scene plain = sphere_scene(sphere), with_texture = sphere_scene(textured);
+    RenderOptions bilinear = RenderOptions::exact(), nearest = RenderOptions::exact();
+    nearest.texture_filter = TextureFilter::nearest;
+    Renderer untextured_renderer(bilinear), bilinear_renderer(bilinear), nearest_renderer(nearest);
+    const auto timed = [](Renderer& renderer, const Scene& scene) {
+        return [&renderer, &scene] { return support::time_ms([&] { renderer.render(scene); }); };
+    };
+    const std::vector<double> medians = support::interleaved_medians(
+        9, 1, {timed(untextured_renderer, plain), timed(bilinear_renderer, with_texture),
+               timed(nearest_renderer, with_texture)});
+    std::printf("| render (1024 x 1024, Phong, exact, %zu triangles, all cores) | median ms | / untextured |\n",
+                sphere.triangles.size());
+    std::printf("|---|---|---|\n");
+    const char* names[] = {"untextured", "textured, bilinear", "textured, nearest"};
+    for (int i = 0; i < 3; ++i) std::printf("| %s | %.1f | %.2f |\n", names[i], medians[i], medians[i] / medians[0]);
+    return 0;
+}
