@@ -166,9 +166,7 @@ void load_objects(SceneFile& file, const std::string& name, const SceneLoadOptio
     Scene& scene = loaded.scene;
     // Each file once, and its old whole-file material made per-face once.
     std::map<const MeshFile*, std::shared_ptr<const Mesh>> placed;
-    bool fallback[4] = {false, false, false, false};
-    for (std::size_t i = 0; i < file.objects.size(); ++i) {
-        SceneFileObject& entry = file.objects[i];
+    const auto file_mesh = [&](std::size_t i, const SceneFileObject& entry) {
         const std::string pointer = "/objects/" + std::to_string(i) + "/mesh";
         require_mesh_file(name, pointer, entry.mesh_path);
         std::shared_ptr<const MeshFile> mesh_file;
@@ -179,8 +177,17 @@ void load_objects(SceneFile& file, const std::string& name, const SceneLoadOptio
         }
         std::shared_ptr<const Mesh>& mesh = placed[mesh_file.get()];
         if (!mesh) mesh = with_file_material(mesh_file);
+        return mesh;
+    };
+    bool fallback[4] = {false, false, false, false};
+    for (std::size_t i = 0; i < file.objects.size(); ++i) {
+        SceneFileObject& entry = file.objects[i];
         SceneObject object;
-        object.mesh = mesh;
+        if (i < options.object_meshes.size() && options.object_meshes[i]) {
+            object.mesh = options.object_meshes[i];
+        } else {
+            object.mesh = file_mesh(i, entry);
+        }
         object.transform = entry.transform;
         object.material = entry.material;
         object.normals = entry.normals;

@@ -35,6 +35,10 @@ struct SceneLoadOptions {
     /// A mesh in memory to use instead of the scene's "mesh" (Python's
     /// Scene.load(path, mesh=...)). An error for a scene of "objects".
     std::shared_ptr<const Mesh> mesh;
+    /// Meshes in memory for a scene of "objects": entry i, when not null, is
+    /// objects[i]'s mesh and its "mesh" file is not read (Python's objects
+    /// whose "mesh" is a phongrast.Mesh). Objects sharing one pointer share it.
+    std::vector<std::shared_ptr<const Mesh>> object_meshes;
     /// The image size when both are positive (the command's --size); a mesh
     /// alone is framed for it. Otherwise the scene's, or 512 x 512 for a mesh alone.
     int rows = 0;
