@@ -130,3 +130,12 @@ def test_a_mesh_file_alone_is_framed_as_the_command_frames_it(tmp_path):
     scene = phongrast.Scene.load(str(tmp_path / "tri.obj"))
     assert scene.size == (512, 512) and scene.objects == [] and scene.mesh.triangle_count == 1
     assert scene.normals == "computed"  # the file has no normals
+
+
+def test_the_docs_example_of_objects_in_memory_runs():
+    text = (SOURCE_DIR / "docs" / "python.md").read_text()
+    section = text.split("A scene of several objects in memory:", 1)[1]
+    code = section.split("```python\n", 1)[1].split("```", 1)[0]
+    namespace = {"__name__": "docs"}
+    exec(compile(code, "docs/python.md", "exec"), namespace)
+    assert len(namespace["scene"].objects) == 2
