@@ -476,6 +476,11 @@ void bind_scene_look(py::class_<PyScene>& scene) {
                        "List of dicts position, intensity (set from dicts or objects with pos/position, intensity).");
     scene.def_property("mesh", [](const PyScene& s) { return PyMesh{std::shared_ptr<Mesh>(s.scene, &s.scene->mesh)}; },
                        [](PyScene& s, const PyMesh& m) {
+                           if (!s.scene->objects.empty()) {
+                               throw py::value_error("mesh: this scene places " +
+                                                     std::to_string(s.scene->objects.size()) +
+                                                     " objects; a scene has one mesh or objects, not both");
+                           }
                            // A new Scene, so arrays still viewing the old mesh stay valid.
                            auto replaced = std::make_shared<Scene>(*s.scene);
                            replaced->mesh = *m.mesh;

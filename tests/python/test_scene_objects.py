@@ -139,3 +139,11 @@ def test_the_docs_example_of_objects_in_memory_runs():
     namespace = {"__name__": "docs"}
     exec(compile(code, "docs/python.md", "exec"), namespace)
     assert len(namespace["scene"].objects) == 2
+
+
+def test_a_scene_of_objects_takes_no_single_mesh():
+    scene = phongrast.Scene.from_dict({"objects": [{"mesh": triangle_mesh()}], "camera": CAMERA, "image": IMAGE})
+    with pytest.raises(ValueError, match="mesh: this scene places 1 objects; a scene has one mesh or objects"):
+        scene.mesh = triangle_mesh()
+    with pytest.raises(ValueError, match="both \"mesh\" and \"objects\""):
+        phongrast.Scene.from_dict({"mesh": "a.obj", "objects": [{"mesh": "a.obj"}], "camera": CAMERA, "image": IMAGE})
