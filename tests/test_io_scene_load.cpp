@@ -2,9 +2,13 @@
 // many objects place it, the contract's material precedence, a mesh alone
 // framed with its file's normals, a version-1 scene exactly as before, and
 // the errors that name the scene file and the object.
+#include <cmath>
+
 #include <catch2/catch.hpp>
 
 #include "io_test_files.hpp"
+#include "phongrast/camera.hpp"
+#include "phongrast/io/auto_scene.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/scene_file.hpp"
@@ -232,4 +236,40 @@ TEST_CASE("bad inputs name the scene file, the object and what was expected") {
     CHECK_THROWS_WITH(io::load_scene(objects, override_mesh),
                       Contains("objects.json: /objects: the scene places several objects; a replacement mesh"));
     CHECK_THROWS_AS(io::load_scene(folder.file("no_such.json")), io::FileError);
+}
+
+TEST_CASE("frame_scene frames every object in world space; on one mesh it is frame_mesh") {
+    TemporaryFolder folder;
+    folder.write("tri.obj", triangle_obj);
+    const std::string path = folder.write(
+        "scene.json", scene_text(R"("objects": [{ "mesh": "tri.obj" }, { "mesh": "tri.obj", "translation": [40, -3, 2] },
+                                                { "mesh": "tri.obj", "scale": [-5, 1, 1] }])"));
+    Scene scene = io::load_scene(path).scene;
+    io::frame_scene(scene, 60, 80);
+    CHECK(scene.image.rows == 60);
+    CHECK(scene.image.columns == 80);
+    const CameraFrame frame = make_camera_frame(scene.camera, 60, 80);
+    for (const SceneObject& object : scene.objects) {
+        for (const glm::dvec3& p : object.mesh->positions) {
+            const glm::dvec3 c = frame.camera_from_world(glm::dvec3(object.transform * glm::dvec4(p, 1.0)));
+            REQUIRE(c.z > 0.0);
+            const double x = scene.camera.focal * c.x / c.z;
+            const double y = scene.camera.focal * c.y / c.z;
+            CHECK(std::abs(x) <= scene.camera.sensor_width / 2);   // inside, with the 10% margin
+            CHECK(std::abs(y) <= scene.camera.sensor_height / 2);
+        }
+    }
+    CHECK(scene.camera.lookat.x == Approx((41.0 + -5.0) / 2));  // the box of every object's vertices
+
+    Mesh mesh = io::read_mesh(folder.file("tri.obj")).mesh;
+    Scene single;
+    single.mesh = mesh;
+    io::frame_scene(single, 30, 40);
+    const Scene framed = io::frame_mesh(mesh, 30, 40);
+    CHECK(single.camera.eye == framed.camera.eye);
+    CHECK(single.camera.sensor_height == framed.camera.sensor_height);
+    CHECK(single.lights.size() == framed.lights.size());
+
+    Scene empty;
+    CHECK_THROWS_AS(io::frame_scene(empty, 8, 8), std::invalid_argument);
 }

@@ -561,6 +561,19 @@ automatically. Every field is a property.)");
                         return PyScene{std::make_shared<Scene>(io::frame_mesh(*mesh.mesh, rows, columns)), {}};
                     }, py::arg("mesh"), py::arg("rows") = 512, py::arg("columns") = 512,
                     "Frames the mesh as `phongrast render mesh.obj` does (camera, three lights, neutral material).")
+        .def("frame", [](PyScene& s, const py::object& rows, const py::object& columns) {
+                 const int m = rows.is_none() ? s.scene->image.rows : read_int(rows, "rows", 1, 32768);
+                 const int n = columns.is_none() ? s.scene->image.columns : read_int(columns, "columns", 1, 32768);
+                 auto framed = std::make_shared<Scene>(*s.scene);
+                 try {
+                     io::frame_scene(*framed, m, n);
+                 } catch (const std::invalid_argument& error) {
+                     throw py::value_error(error.what());
+                 }
+                 s.scene = std::move(framed);
+             }, py::arg("rows") = py::none(), py::arg("columns") = py::none(),
+             "Frames every object (in world space) as phongrast render frames a mesh alone: camera, image size, "
+             "ambient, three lights and the neutral base material. Meshes, objects, shader and lighting stay.")
         .def("copy", [](const PyScene& s) { return PyScene{std::make_shared<Scene>(*s.scene), s.warnings}; },
              "An independent copy (mesh included).");
     bind_scene_camera(scene);

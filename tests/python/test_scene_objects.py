@@ -147,3 +147,14 @@ def test_a_scene_of_objects_takes_no_single_mesh():
         scene.mesh = triangle_mesh()
     with pytest.raises(ValueError, match="both \"mesh\" and \"objects\""):
         phongrast.Scene.from_dict({"mesh": "a.obj", "objects": [{"mesh": "a.obj"}], "camera": CAMERA, "image": IMAGE})
+
+
+def test_frame_fits_every_object():
+    mesh = triangle_mesh()
+    scene = phongrast.Scene.from_dict({"objects": [{"mesh": mesh}, {"mesh": mesh, "translation": [30, 0, 0]}],
+                                       "camera": CAMERA, "image": IMAGE})
+    scene.frame(40, 60)
+    assert scene.size == (40, 60) and len(scene.lights) == 3
+    assert scene.lookat[0] == pytest.approx(15.5)
+    image, stats = phongrast.render(scene)
+    assert image.shape == (40, 60, 3)
