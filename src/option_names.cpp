@@ -103,12 +103,12 @@ const Entry& entry_for(std::string_view key) {
     throw std::invalid_argument("unknown option '" + std::string(key) + "'; expected one of " + keys);
 }
 
-/// "a, b or c".
+/// "'a', 'b' or 'c'".
 std::string listed(const NamedOption& option) {
     std::string text;
     for (std::size_t i = 0; i < option.choices.size(); ++i) {
         if (i > 0) text += i + 1 == option.choices.size() ? " or " : ", ";
-        text += option.choices[i].front();
+        text += "'" + option.choices[i].front() + "'";
     }
     return text;
 }

@@ -53,10 +53,10 @@ TEST_CASE("depth-buffer and depth_buffer are one name; keys may be spelled as fl
 
 TEST_CASE("a bad name or key is an error naming it and listing the choices") {
     CHECK_THROWS_WITH(options_from_names({{"visibility", "zbuffer"}}),
-                      Contains("visibility: unknown 'zbuffer'; expected painter or depth-buffer"));
+                      Contains("visibility: unknown 'zbuffer'; expected 'painter' or 'depth-buffer'"));
     CHECK_THROWS_WITH(options_from_names({{"texture_filter", "cubic"}}),
-                      Contains("texture_filter: unknown 'cubic'; expected bilinear, nearest or trilinear"));
-    CHECK_THROWS_WITH(options_from_names({{"mode", "fast"}}), Contains("mode: unknown 'fast'; expected exact or seed"));
+                      Contains("texture_filter: unknown 'cubic'; expected 'bilinear', 'nearest' or 'trilinear'"));
+    CHECK_THROWS_WITH(options_from_names({{"mode", "fast"}}), Contains("mode: unknown 'fast'; expected 'exact' or 'seed'"));
     CHECK_THROWS_WITH(options_from_names({{"colour", ""}}), Contains("unknown option 'colour'; expected one of mode,"));
     RenderOptions options;
     CHECK_THROWS_AS(set_named_option(options, "overdraw", "none"), std::invalid_argument);

@@ -45,7 +45,7 @@ std::vector<std::string> accepted_names(const NamedOption& option);
 /// absent or empty), then the others over it. Keys as named_option() takes
 /// them; an empty value means "not given". Throws std::invalid_argument
 /// naming the key, the value and the choices ("visibility: unknown 'x';
-/// expected painter or depth-buffer").
+/// expected 'painter' or 'depth-buffer'").
 RenderOptions options_from_names(const std::map<std::string, std::string>& names);
 
 /// Sets one named option on `options` (not `mode`: it replaces the preset; use

@@ -119,7 +119,7 @@ def test_option_names_are_the_commands(tmp_path):
         assert np.array_equal(image, cli)
     image, _ = phongrast.render(scene, texture_filter="nearest", overdraw="visible", precision="double")
     assert image.shape == (24, 32, 3)
-    with pytest.raises(ValueError, match="visibility: unknown 'zbuffer'; expected painter or depth-buffer"):
+    with pytest.raises(ValueError, match="visibility: unknown 'zbuffer'; expected 'painter' or 'depth-buffer'"):
         phongrast.render(scene, visibility="zbuffer")
     with pytest.raises(ValueError, match="texture_filter: unknown 'cubic'"):
         phongrast.render(scene, texture_filter="cubic")
