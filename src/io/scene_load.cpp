@@ -37,6 +37,18 @@ public:
         return file;
     }
 
+    /// The file at `path` for a scene of one mesh, which takes its mesh: read
+    /// here and moved out whole (a large mesh is never held twice), or a copy
+    /// of what the caller's reader keeps.
+    MeshFile take(const std::string& path) {
+        const auto start = std::chrono::steady_clock::now();
+        MeshFile file = options_.read_mesh ? MeshFile(*options_.read_mesh(path)) : read_mesh(path);
+        loaded_.load_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        ++loaded_.meshes_read;
+        for (const std::string& warning : file.warnings) loaded_.warnings.push_back(warning);
+        return file;
+    }
+
 private:
     const SceneLoadOptions& options_;
     LoadedScene& loaded_;
@@ -136,10 +148,10 @@ void load_single_mesh(SceneFile& file, const std::string& name, const SceneLoadO
         } else {
             require_mesh_file(name, "/mesh", path);
         }
-        const std::shared_ptr<const MeshFile> mesh_file = meshes.get(path);
-        scene.mesh = mesh_file->mesh;
+        MeshFile mesh_file = meshes.take(path);
+        scene.mesh = std::move(mesh_file.mesh);
         per_face = !scene.mesh.face_materials.empty();
-        if (!per_face) from_file = mesh_file->material;
+        if (!per_face) from_file = mesh_file.material;
         loaded.mesh_path = path;
     }
     if (per_face) {
@@ -237,14 +249,16 @@ LoadedScene load_mesh_scene(const std::string& path, const SceneLoadOptions& opt
     loaded.mesh_path = path;
     loaded.framed = true;
     MeshCache meshes(options, loaded);
-    const std::shared_ptr<const MeshFile> file = meshes.get(path);
+    MeshFile file = meshes.take(path);
     const int rows = has_size(options) ? options.rows : 512;
     const int columns = has_size(options) ? options.columns : 512;
-    loaded.scene = frame_mesh(file->mesh, rows, columns);
+    const bool per_face = !file.mesh.face_materials.empty();
+    const bool has_normals = !file.mesh.file_normals.empty();
+    loaded.scene = frame_mesh(std::move(file.mesh), rows, columns);
     // The framing's neutral material is the base; an old whole-file MTL
     // material replaces it, per-face materials win over it face by face.
-    if (file->material && file->mesh.face_materials.empty()) loaded.scene.material = *file->material;
-    if (!file->mesh.file_normals.empty()) loaded.scene.normals = NormalSource::file;
+    if (file.material && !per_face) loaded.scene.material = *file.material;
+    if (has_normals) loaded.scene.normals = NormalSource::file;
     return loaded;
 }
 
