@@ -9,6 +9,7 @@
 #include "batch_supervisor.hpp"
 #include "commands.hpp"
 #include "phongrast/io/error.hpp"
+#include "phongrast/option_names.hpp"
 
 namespace phongrast::cli {
 
@@ -39,8 +40,11 @@ void add_batch_command(CLI::App& app, BatchCommand& command) {
     batch->add_option("--size", command.defaults.size, "Default image size WxH for jobs that set none");
     batch->add_option("--samples", command.samples, "Default samples per pixel axis for jobs that set none")
         ->check(CLI::Range(1, 16));
-    batch->add_option("--mode", command.defaults.mode, "Default mode (exact or seed) for jobs that set none")
-        ->check(CLI::IsMember({"exact", "seed"}));
+    for (const NamedOption& option : named_options()) {  // --mode, --visibility, ... --texture-filter
+        batch->add_option(option_flag(option), command.defaults.options[option.key],
+                          "Default for jobs that set none: " + option.help)
+            ->check(CLI::IsMember(accepted_names(option)));
+    }
     batch->add_flag("-q,--quiet", command.quiet, "Print nothing but errors");
 }
 

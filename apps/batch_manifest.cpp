@@ -15,6 +15,7 @@
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/lighting.hpp"
+#include "phongrast/option_names.hpp"
 #include "phongrast/render.hpp"
 
 namespace phongrast::cli {
@@ -77,12 +78,17 @@ public:
     }
 
     void reject_unknown_fields() const {
-        static const std::set<std::string> known = {"scene", "mesh",    "views", "elevation", "shader",
-                                                    "lighting", "size", "samples", "mode",  "output"};
+        std::set<std::string> known = {"scene", "mesh", "views", "elevation", "shader", "lighting", "size", "samples",
+                                       "output"};
+        std::string named;  // the rendering options' names, from the library's table
+        for (const NamedOption& option : named_options()) {
+            known.insert(option.key);
+            named += ", " + option.key;
+        }
         for (auto it = object_.begin(); it != object_.end(); ++it) {
             if (known.count(it.key()) == 0) {
                 fail(it.key(), "unknown field; expected scene, mesh, views, elevation, shader, lighting, size, "
-                               "samples, mode or output");
+                               "samples" + named + " or output");
             }
         }
     }
@@ -97,7 +103,9 @@ JobSettings read_settings(const LineReader& reader, const JobSettings& defaults)
     if (const std::string shader = reader.text("shader"); !shader.empty()) settings.shader = shader;
     if (const std::string lighting = reader.text("lighting"); !lighting.empty()) settings.lighting = lighting;
     if (const std::string size = reader.text("size"); !size.empty()) settings.size = size;
-    if (const std::string mode = reader.text("mode"); !mode.empty()) settings.mode = mode;
+    for (const NamedOption& option : named_options()) {
+        if (const std::string name = reader.text(option.key.c_str()); !name.empty()) settings.options[option.key] = name;
+    }
     if (const std::optional<int> samples = reader.whole_number("samples", 1, 16)) settings.samples = samples;
     // Names are checked now, so that a typo stops the whole batch before it starts.
     try {
@@ -116,8 +124,16 @@ JobSettings read_settings(const LineReader& reader, const JobSettings& defaults)
         reader.fail("size", "expected \"WxH\" with whole numbers from 1 to 32768, e.g. \"640x480\"; got \"" +
                                 settings.size + "\"");
     }
-    if (!settings.mode.empty() && settings.mode != "exact" && settings.mode != "seed") {
-        reader.fail("mode", "expected \"exact\" or \"seed\", got \"" + settings.mode + "\"");
+    for (const auto& [key, name] : settings.options) {
+        const NamedOption& option = named_option(key);
+        const std::vector<std::string> accepted = accepted_names(option);
+        if (name.empty() || std::find(accepted.begin(), accepted.end(), name) != accepted.end()) continue;
+        std::string expected;
+        for (std::size_t i = 0; i < option.choices.size(); ++i) {
+            expected += (i == 0 ? "" : i + 1 == option.choices.size() ? " or " : ", ") +
+                        ("\"" + option.choices[i].front() + "\"");
+        }
+        reader.fail(key, "expected " + expected + ", got \"" + name + "\"");
     }
     return settings;
 }

@@ -5,7 +5,9 @@
 //   {"mesh": "chair.obj", "views": 24, "elevation": 20}     a turntable around the framed mesh
 //
 // Optional on every line: "shader", "lighting", "size" ("WxH"), "samples",
-// "mode" ("exact" or "seed") and "output", a name pattern relative to the
+// the rendering options of the library's table of names (option_names.hpp:
+// "mode" ("exact" or "seed"), "visibility", "overdraw", "precision",
+// "sample_pattern", "back_faces", "texture_filter") and "output", a name pattern relative to the
 // output folder with {name} (the scene's or mesh's file stem, "line-N" for an
 // inline scene), {line} and {view} (zero-padded to the width of the last view
 // number; {view:N} pads to N digits). The pattern's extension chooses PNG or
@@ -20,6 +22,7 @@
 #ifndef PHONGRAST_APPS_BATCH_MANIFEST_HPP
 #define PHONGRAST_APPS_BATCH_MANIFEST_HPP
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,7 +36,8 @@ struct JobSettings {
     std::string lighting;
     std::string size;  ///< "WxH"
     std::optional<int> samples;
-    std::string mode;  ///< "exact" or "seed"
+    /// Named rendering options by key (option_names.hpp), "mode" among them.
+    std::map<std::string, std::string> options;
 };
 
 enum class JobKind { scene_file, inline_scene, mesh };

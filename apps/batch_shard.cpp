@@ -98,6 +98,7 @@ Shard choose_shard(const std::string& shard_flag, int shards, const Environment&
 double expected_work(const BatchJob& job) {
     double pixels = 512.0 * 512.0;
     std::string mesh = job.kind == JobKind::mesh ? job.path : "";
+    double mesh_bytes = 0.0;  // a scene of objects: each placement's file (a file placed twice is read once, but drawn twice)
     if (job.kind != JobKind::mesh) {
         try {  // Only the image size and mesh name are wanted; an unreadable scene is the job's failure, later.
             const io::SceneFile file = job.kind == JobKind::scene_file
@@ -105,6 +106,7 @@ double expected_work(const BatchJob& job) {
                                            : io::parse_scene_json(job.scene_json, "inline scene", job.folder);
             pixels = double(file.scene.image.rows) * double(file.scene.image.columns);
             mesh = file.mesh_path;
+            for (const io::SceneFileObject& object : file.objects) mesh_bytes += double(file_bytes(object.mesh_path));
         } catch (const std::exception&) {
         }
     }
@@ -113,7 +115,7 @@ double expected_work(const BatchJob& job) {
         pixels = double(columns) * double(rows);
     }
     const double samples = job.settings.samples.value_or(1);
-    return double(job.views) * (pixels * samples * samples + double(file_bytes(mesh)) / 8.0);
+    return double(job.views) * (pixels * samples * samples + (double(file_bytes(mesh)) + mesh_bytes) / 8.0);
 }
 
 std::vector<std::vector<std::size_t>> partition(const std::vector<double>& work, int count) {

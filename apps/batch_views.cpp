@@ -5,7 +5,6 @@
 #include <filesystem>
 
 #include "phongrast/camera.hpp"
-#include "phongrast/io/scene_file.hpp"
 
 namespace phongrast::cli {
 namespace {
@@ -70,7 +69,7 @@ void make_turntable(const Scene& framed, int views, double elevation_degrees, Jo
     }
 }
 
-io::MeshFile LastMesh::read(const std::string& path) {
+std::shared_ptr<const io::MeshFile> LastMesh::read(const std::string& path) {
     std::error_code error;
     const auto bytes = std::filesystem::file_size(path, error);
     const auto modified = std::filesystem::last_write_time(path, error);
@@ -78,10 +77,10 @@ io::MeshFile LastMesh::read(const std::string& path) {
                                              std::to_string(modified.time_since_epoch().count());
     if (key.empty() || key != key_ || !mesh_) {
         mesh_.reset();
-        mesh_ = io::read_mesh(path);  // throws for a bad file: nothing is kept
+        mesh_ = std::make_shared<const io::MeshFile>(io::read_mesh(path));  // throws for a bad file: nothing is kept
         key_ = key;
     }
-    return *mesh_;
+    return mesh_;
 }
 
 JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes) {
@@ -90,7 +89,7 @@ JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes) {
     flags.shader = job.settings.shader;
     flags.lighting = job.settings.lighting;
     flags.size = job.settings.size;
-    flags.mode = job.settings.mode.empty() ? "exact" : job.settings.mode;
+    flags.options = job.settings.options;
     flags.samples = job.settings.samples.value_or(1);
     flags.threads = threads;
     if (meshes != nullptr) flags.read_mesh = [meshes](const std::string& path) { return meshes->read(path); };
@@ -99,7 +98,7 @@ JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes) {
     JobScenes scenes;
     if (job.kind == JobKind::inline_scene) {
         const std::string name = "line " + std::to_string(job.line) + " /scene";
-        scenes.prepared = prepare_parsed_scene(io::parse_scene_json(job.scene_json, name, job.folder), name, flags, silent);
+        scenes.prepared = prepare_scene_text(job.scene_json, name, job.folder, flags, silent);
     } else {
         scenes.prepared = prepare_scene(flags, silent);
     }

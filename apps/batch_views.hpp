@@ -4,6 +4,7 @@
 #ifndef PHONGRAST_APPS_BATCH_VIEWS_HPP
 #define PHONGRAST_APPS_BATCH_VIEWS_HPP
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,11 +27,11 @@ struct JobScenes {
 /// time), so that consecutive jobs of a shard sharing a mesh parse it once.
 class LastMesh {
 public:
-    io::MeshFile read(const std::string& path);
+    std::shared_ptr<const io::MeshFile> read(const std::string& path);
 
 private:
     std::string key_;
-    std::optional<io::MeshFile> mesh_;
+    std::shared_ptr<const io::MeshFile> mesh_;
 };
 
 /// Loads a job's files, meshes through `meshes` when given. Throws

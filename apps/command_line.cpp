@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "phongrast/option_names.hpp"
+
 namespace phongrast::cli {
 
 void add_scene_flags(CLI::App& command, SceneFlags& flags, const std::string& output_help) {
@@ -14,20 +16,14 @@ void add_scene_flags(CLI::App& command, SceneFlags& flags, const std::string& ou
     command.add_option("--shader", flags.shader, "flat, gouraud or phong (overrides the scene)");
     command.add_option("--lighting", flags.lighting,
                        "ambient, diffuse, specular, full, or several joined with '+' (overrides the scene)");
-    command.add_option("--mode", flags.mode,
-                       "exact: the contract's rendering; seed: the original method's three simplifications")
-        ->check(CLI::IsMember({"exact", "seed"}))
-        ->capture_default_str();
-    command.add_option("--visibility", flags.visibility,
-                       "painter: the contract's order, farthest first; depth-buffer: nearest sample wins "
-                       "(not the contract; for comparison)")
-        ->check(CLI::IsMember({"painter", "depth-buffer"}))
-        ->capture_default_str();
-    command.add_option("--overdraw", flags.overdraw,
-                       "Painter's order: all shades every sample of every triangle; visible shades only the "
-                       "samples left visible; auto picks visible for per-pixel lighting (the picture does not change)")
-        ->check(CLI::IsMember({"auto", "visible", "all"}))
-        ->capture_default_str();
+    // The named options, from the library's one table (so that every spelling
+    // Python accepts, such as depth_buffer, is accepted here too).
+    for (const NamedOption& option : named_options()) {
+        command
+            .add_option(option_flag(option), flags.options[option.key],
+                        option.help + " (default: " + option.default_name + ")")
+            ->check(CLI::IsMember(accepted_names(option)));
+    }
     command.add_option("--size", flags.size, "Image size WxH in pixels, e.g. 640x480 (overrides the scene)");
     command.add_option("--eye", flags.eye, "Camera position x,y,z")->expected(3)->delimiter(',');
     command.add_option("--lookat", flags.lookat, "Point the camera looks at x,y,z")->expected(3)->delimiter(',');

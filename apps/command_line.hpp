@@ -3,6 +3,8 @@
 #define PHONGRAST_APPS_COMMAND_LINE_HPP
 
 #include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,9 +21,10 @@ struct SceneFlags {
     std::string mesh;
     std::string shader;
     std::string lighting;
-    std::string mode = "exact";
-    std::string visibility = "painter";
-    std::string overdraw = "auto";
+    /// The named options (phongrast/option_names.hpp: mode, visibility,
+    /// overdraw, precision, sample_pattern, back_faces, texture_filter) by key;
+    /// absent or empty: the default.
+    std::map<std::string, std::string> options;
     std::string size;  ///< "WxH"
     std::vector<double> eye, lookat, up, sensor;
     double focal = 0.0;
@@ -32,7 +35,7 @@ struct SceneFlags {
     bool quiet = false;
     /// Reads a mesh file; empty: io::read_mesh. The batch command passes a
     /// reader that keeps the last mesh, for jobs that share it.
-    std::function<io::MeshFile(const std::string& path)> read_mesh;
+    std::function<std::shared_ptr<const io::MeshFile>(const std::string& path)> read_mesh;
 };
 
 /// Adds the positional input, -o and every scene/override flag to `command`.

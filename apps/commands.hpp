@@ -49,7 +49,7 @@ struct BatchCommand {
     bool quiet = false;
     int threads = 0;
     int samples = 0;      ///< 0: not given
-    JobSettings defaults;  ///< --shader, --lighting, --size, --mode
+    JobSettings defaults;  ///< --shader, --lighting, --size and the named options (--mode, ...)
 };
 void add_batch_command(CLI::App& app, BatchCommand& command);
 int run_batch(const BatchCommand& command);

@@ -106,7 +106,7 @@ int run_render(const RenderCommand& command) {
     }
     if (!command.stats_json.empty()) {
         io::write_text_file(command.stats_json,
-                            stats_json(timing, result.stats, prepared.scene, prepared.options, command.scene.mode));
+                            stats_json(timing, result.stats, prepared.scene, prepared.options));
     }
     messages.result("wrote " + std::filesystem::absolute(output).lexically_normal().string());
     return 0;

@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "phongrast/option_names.hpp"
+
 namespace phongrast::cli {
 
 Messages::Messages(bool quiet) : quiet_(quiet), terminal_(isatty(STDERR_FILENO) != 0) {}
@@ -67,24 +69,30 @@ double Timing::min() const { return seconds.empty() ? 0.0 : *std::min_element(se
 double Timing::max() const { return seconds.empty() ? 0.0 : *std::max_element(seconds.begin(), seconds.end()); }
 
 std::string stats_json(const Timing& timing, const RenderStats& stats, const Scene& scene,
-                       const RenderOptions& options, const std::string& mode) {
+                       const RenderOptions& options) {
     nlohmann::ordered_json document;
     document["render_seconds"] = {
         {"median", timing.median()}, {"min", timing.min()}, {"max", timing.max()},
         {"runs", timing.seconds},    {"warm_up", timing.warm_up}};
     if (timing.load_seconds >= 0.0) document["load_seconds"] = timing.load_seconds;
-    document["scene"] = {{"triangles", scene.mesh.triangles.size()},
-                         {"vertices", scene.mesh.positions.size()},
+    std::size_t triangles = scene.mesh.triangles.size();
+    std::size_t vertices = scene.mesh.positions.size();
+    for (const SceneObject& object : scene.objects) {  // each placement counts
+        triangles += object.mesh->triangles.size();
+        vertices += object.mesh->positions.size();
+    }
+    document["scene"] = {{"triangles", triangles},
+                         {"vertices", vertices},
+                         {"objects", scene.objects.size()},
                          {"height", scene.image.rows},
                          {"width", scene.image.columns},
                          {"shader", to_string(scene.shader)},
                          {"lighting", to_string(scene.lighting)},
                          {"lights", scene.lights.size()},
-                         {"mode", mode},
-                         {"visibility", options.visibility == Visibility::depth_buffer ? "depth-buffer" : "painter"},
-                         {"overdraw", options.overdraw == Overdraw::shade_all       ? "all"
-                                      : options.overdraw == Overdraw::shade_visible ? "visible"
-                                                                                    : "auto"},
+                         {"mode", option_name(options, "mode")},
+                         {"visibility", option_name(options, "visibility")},
+                         {"overdraw", option_name(options, "overdraw")},
+                         {"texture_filter", option_name(options, "texture_filter")},
                          {"threads", options.threads},
                          {"samples_per_axis", options.samples_per_axis}};
     nlohmann::ordered_json& counts = document["stats"];

@@ -44,7 +44,7 @@ struct Timing {
 
 /// The --stats-json document: timing and the last run's RenderStats.
 std::string stats_json(const Timing& timing, const RenderStats& stats, const Scene& scene,
-                       const RenderOptions& options, const std::string& mode);
+                       const RenderOptions& options);
 
 }  // namespace phongrast::cli
 

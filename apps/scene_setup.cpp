@@ -1,6 +1,5 @@
 #include "scene_setup.hpp"
 
-#include <chrono>
 #include <filesystem>
 #include <sstream>
 
@@ -10,28 +9,14 @@
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/scene_file.hpp"
+#include "phongrast/io/scene_load.hpp"
+#include "phongrast/option_names.hpp"
 #include "phongrast/smooth_normals.hpp"
 
 namespace phongrast::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Reads a mesh in any supported format (through the batch command's cache
-/// when it passes one); `seconds` is the time it took.
-io::MeshFile load_mesh(const std::string& path, const SceneFlags& flags, const Messages& messages, double& seconds) {
-    const auto start = std::chrono::steady_clock::now();
-    io::MeshFile mesh = flags.read_mesh ? flags.read_mesh(path) : io::read_mesh(path);
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (const std::string& warning : mesh.warnings) messages.warning(warning);
-    return mesh;
-}
-
-std::string describe(const PhongMaterial& m) {
-    std::ostringstream out;
-    out << "ka " << m.ka.x << ", kd " << m.kd.x << ", ks " << m.ks.x << ", n " << m.n;
-    return out.str();
-}
 
 glm::dvec3 to_vector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
@@ -71,38 +56,26 @@ std::string choose_output(const std::string& output, const std::string& default_
 
 namespace {
 
-/// The scene branch of prepare_scene: the parsed file with its mesh loaded
-/// and its material resolved (scene, then MTL, then defaults).
-Scene scene_from_file(io::SceneFile file, const std::string& input, const std::string& mesh_override,
-                      const SceneFlags& flags, const Messages& messages, double& load_seconds) {
-    if (!mesh_override.empty()) {
-        file.mesh_path = mesh_override;
-    } else if (file.mesh_path.empty()) {
-        throw io::FileError(input + ": /mesh: missing required field; expected a mesh file name (.obj, .ply, .stl, .gltf, .glb; or give --mesh)");
-    }
-    std::error_code error;
-    if (mesh_override.empty() && !fs::exists(file.mesh_path, error)) {
-        // Name the scene field too: the path was resolved against the scene's folder.
-        throw io::FileError(input + ": /mesh: " + file.mesh_path +
-                            ": mesh not found (no such file; a relative \"mesh\" is relative to the scene file)");
-    }
-    io::MeshFile obj = load_mesh(file.mesh_path, flags, messages, load_seconds);
-    Scene scene = std::move(file.scene);
-    scene.mesh = std::move(obj.mesh);
-    std::vector<std::string> defaults_used;
-    scene.material = io::resolve_material(file.material, obj.material, &defaults_used);
-    if (!defaults_used.empty()) {
-        std::string names;
-        for (const std::string& name : defaults_used) names += (names.empty() ? "" : ", ") + name;
-        messages.note("no " + names + " in " + input + (obj.material ? " or the mesh's MTL" : " (and the mesh has no MTL)") +
-                      "; using the defaults, material: " + describe(scene.material));
-    }
-    if (!flags.size.empty()) {
-        const auto [columns, rows] = parse_size(flags.size);
-        scene.image.rows = rows;
-        scene.image.columns = columns;
-    }
-    return scene;
+/// How the library's scene builder is to load what the flags name: --size
+/// (checked before any file is read), --mesh, and the batch's mesh reader.
+io::SceneLoadOptions load_options(const SceneFlags& flags, const std::string& mesh_override) {
+    io::SceneLoadOptions options;
+    if (!flags.size.empty()) std::tie(options.columns, options.rows) = parse_size(flags.size);
+    options.mesh_override = mesh_override;
+    options.read_mesh = flags.read_mesh;
+    return options;
+}
+
+/// The builder's result as the commands use it; its warnings and the
+/// defaults it used are said now.
+PreparedScene prepared_from(io::LoadedScene loaded, const Messages& messages) {
+    for (const std::string& warning : loaded.warnings) messages.warning(warning);
+    if (!loaded.defaults_note.empty()) messages.note(loaded.defaults_note);
+    PreparedScene prepared;
+    prepared.scene = std::move(loaded.scene);
+    prepared.name = std::move(loaded.name);
+    prepared.load_seconds = loaded.load_seconds;
+    return prepared;
 }
 
 /// --smooth and --crease.
@@ -142,19 +115,21 @@ void apply_flags(PreparedScene& prepared, const SceneFlags& flags, const Message
         scene.camera.sensor_width = flags.sensor[1];
     }
     const NormalOptions normals = normal_options(flags);
-    if (!normals.is_contract()) scene.mesh = with_normals(scene.mesh, normals);
+    if (!normals.is_contract()) {
+        if (!scene.objects.empty()) {
+            throw std::invalid_argument("--smooth/--crease: apply to a scene of one mesh; this scene places " +
+                                        std::to_string(scene.objects.size()) + " objects");
+        }
+        scene.mesh = with_normals(scene.mesh, normals);
+    }
     try {
         make_camera_frame(scene.camera, scene.image.rows, scene.image.columns);
     } catch (const std::invalid_argument& error) {
         throw std::invalid_argument(std::string("command line: ") + error.what());
     }
 
-    prepared.options = flags.mode == "seed" ? RenderOptions::seed() : RenderOptions::exact();
+    prepared.options = options_from_names(flags.options);
     prepared.options.threads = flags.threads;
-    prepared.options.visibility = flags.visibility == "depth-buffer" ? Visibility::depth_buffer : Visibility::painter;
-    prepared.options.overdraw = flags.overdraw == "visible" ? Overdraw::shade_visible
-                                : flags.overdraw == "all"   ? Overdraw::shade_all
-                                                            : Overdraw::automatic;
     prepared.options.samples_per_axis = flags.samples;
 }
 
@@ -176,29 +151,19 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
         input.clear();
     }
 
-    bool auto_framed = false;
     if (input.empty()) {
-        // Only a mesh: frame it and tell the user what was chosen.
-        int rows = 512;
-        int columns = 512;
-        if (!flags.size.empty()) std::tie(columns, rows) = parse_size(flags.size);
-        io::MeshFile obj = load_mesh(mesh_path, flags, messages, prepared.load_seconds);
-        const std::optional<PhongMaterial> mtl = obj.material;
-        prepared.scene = io::frame_mesh(std::move(obj.mesh), rows, columns);
-        if (mtl) prepared.scene.material = *mtl;
-        prepared.name = fs::path(mesh_path).stem().string();
-        auto_framed = true;
+        // Only a mesh: the library frames it; below, the user is told what was chosen.
+        prepared = prepared_from(io::load_mesh_scene(mesh_path, load_options(flags, "")), messages);
     } else {
-        if (!flags.size.empty()) parse_size(flags.size);  // a bad --size is reported before the files
-        io::SceneFile file = io::read_scene_file(input);
-        for (const std::string& warning : file.warnings) messages.warning(warning);
-        const std::string mesh_override = mesh_path;
-        if (mesh_path.empty()) mesh_path = file.mesh_path;
-        prepared.scene = scene_from_file(std::move(file), input, mesh_override, flags, messages, prepared.load_seconds);
-        prepared.name = fs::path(input).stem().string();
+        io::LoadedScene loaded = io::load_scene(input, load_options(flags, mesh_path));
+        if (mesh_path.empty()) mesh_path = loaded.mesh_path;
+        prepared = prepared_from(std::move(loaded), messages);
     }
+    const bool auto_framed = input.empty();
     apply_flags(prepared, flags, messages);
-    validate_prepared(prepared, input.empty() ? mesh_path : input + " (mesh " + mesh_path + ")");
+    validate_prepared(prepared, input.empty()      ? mesh_path
+                                : mesh_path.empty() ? input
+                                                    : input + " (mesh " + mesh_path + ")");
 
     if (auto_framed && !messages.quiet()) {
         std::ostringstream normal_flags;
@@ -210,11 +175,9 @@ PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages) {
     return prepared;
 }
 
-PreparedScene prepare_parsed_scene(io::SceneFile file, const std::string& name, const SceneFlags& flags,
-                                   const Messages& messages) {
-    for (const std::string& warning : file.warnings) messages.warning(warning);
-    PreparedScene prepared;
-    prepared.scene = scene_from_file(std::move(file), name, "", flags, messages, prepared.load_seconds);
+PreparedScene prepare_scene_text(const std::string& text, const std::string& name, const std::string& folder,
+                                 const SceneFlags& flags, const Messages& messages) {
+    PreparedScene prepared = prepared_from(io::load_scene_text(text, name, folder, load_options(flags, "")), messages);
     prepared.name = name;
     apply_flags(prepared, flags, messages);
     validate_prepared(prepared, name);

@@ -29,11 +29,11 @@ std::string find_default_scene();
 /// std::invalid_argument for bad input.
 PreparedScene prepare_scene(const SceneFlags& flags, const Messages& messages);
 
-/// prepare_scene for a scene already parsed (a batch manifest's inline scene):
-/// loads its mesh and applies `flags` (its input and mesh are not used).
-/// `name` stands for the file in messages and is the PreparedScene's name.
-PreparedScene prepare_parsed_scene(io::SceneFile file, const std::string& name, const SceneFlags& flags,
-                                   const Messages& messages);
+/// prepare_scene for a scene given as JSON text (a batch manifest's inline
+/// scene): `name` stands for the file in messages and is the PreparedScene's
+/// name; relative mesh paths start at `folder`. Its input and mesh flags are not used.
+PreparedScene prepare_scene_text(const std::string& text, const std::string& name, const std::string& folder,
+                                 const SceneFlags& flags, const Messages& messages);
 
 /// `output` if given, else NAME + suffix in the current folder. Checks the
 /// extension and that the folder exists, before anything is rendered.

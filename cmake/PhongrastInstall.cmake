@@ -36,6 +36,7 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/phongrast"
   COMPONENT phongrast_development
   FILES_MATCHING PATTERN "*.hpp"
   PATTERN "io" EXCLUDE
+  PATTERN "io.hpp" EXCLUDE
 )
 if(TARGET phongrast_io AND IS_DIRECTORY "${PROJECT_SOURCE_DIR}/include/phongrast/io")
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/phongrast/io"
@@ -43,6 +44,10 @@ if(TARGET phongrast_io AND IS_DIRECTORY "${PROJECT_SOURCE_DIR}/include/phongrast
     COMPONENT phongrast_development
     FILES_MATCHING PATTERN "*.hpp"
   )
+  # The io library's umbrella header, beside phongrast.hpp.
+  install(FILES "${PROJECT_SOURCE_DIR}/include/phongrast/io.hpp"
+    DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/phongrast"
+    COMPONENT phongrast_development)
 endif()
 install(FILES "${PROJECT_BINARY_DIR}/include/phongrast/version.hpp"
   DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/phongrast"

@@ -3,18 +3,24 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
 
 #include "phongrast/camera.hpp"
 
 namespace phongrast::io {
 
-Scene frame_mesh(Mesh mesh, int rows, int columns) {
-    if (mesh.positions.empty()) throw std::invalid_argument("frame_mesh: the mesh has no vertices");
-    glm::dvec3 low = mesh.positions.front();
+namespace {
+
+/// The recipe on world-space points: camera, image, lights, ambient and the
+/// neutral material of `scene` set to frame every point.
+void frame_points(const std::vector<glm::dvec3>& points, int rows, int columns, Scene& scene) {
+    glm::dvec3 low = points.front();
     glm::dvec3 high = low;
-    for (const glm::dvec3& p : mesh.positions) {
+    for (const glm::dvec3& p : points) {
         low = glm::min(low, p);
         high = glm::max(high, p);
     }
@@ -23,7 +29,6 @@ Scene frame_mesh(Mesh mesh, int rows, int columns) {
     // A single point (or a mesh too small to measure) still gets a usable camera.
     if (!(diagonal > 0.0) || !std::isfinite(diagonal)) diagonal = 1.0;
 
-    Scene scene;
     scene.image.rows = rows;
     scene.image.columns = columns;
     scene.image.background = glm::vec3(1.0f);
@@ -37,7 +42,7 @@ Scene frame_mesh(Mesh mesh, int rows, int columns) {
     const CameraFrame frame = make_camera_frame(scene.camera, rows, columns);
     double half_width = 0.0;
     double half_height = 0.0;
-    for (const glm::dvec3& p : mesh.positions) {
+    for (const glm::dvec3& p : points) {
         const glm::dvec3 c = frame.camera_from_world(p);
         if (!(c.z > 0.0)) continue;  // cannot happen: the eye is 2 diagonals outside the box
         half_width = std::max(half_width, std::abs(scene.camera.focal * c.x / c.z));
@@ -61,10 +66,35 @@ Scene frame_mesh(Mesh mesh, int rows, int columns) {
     scene.material.kd = glm::vec3(0.75f);
     scene.material.ks = glm::vec3(0.3f);
     scene.material.n = 32.0f;
+}
+
+}  // namespace
+
+Scene frame_mesh(Mesh mesh, int rows, int columns) {
+    if (mesh.positions.empty()) throw std::invalid_argument("frame_mesh: the mesh has no vertices");
+    Scene scene;
+    frame_points(mesh.positions, rows, columns, scene);
     scene.shader = Shader::phong;
     scene.lighting = Lighting::full();
     scene.mesh = std::move(mesh);
     return scene;
+}
+
+void frame_scene(Scene& scene, int rows, int columns) {
+    std::vector<glm::dvec3> points = scene.mesh.positions;
+    for (const SceneObject& object : scene.objects) {
+        for (const glm::dvec3& p : object.mesh->positions) {
+            const glm::dvec4 world = object.transform * glm::dvec4(p, 1.0);
+            points.emplace_back(world.x, world.y, world.z);
+        }
+    }
+    for (const glm::dvec3& p : points) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            throw std::invalid_argument("frame_scene: a vertex is not finite in world space");
+        }
+    }
+    if (points.empty()) throw std::invalid_argument("frame_scene: the scene has no vertices");
+    frame_points(points, rows, columns, scene);
 }
 
 }  // namespace phongrast::io

@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 #include <nlohmann/json.hpp>
 
 #include "phongrast/camera.hpp"
@@ -202,26 +204,182 @@ void read_image(const SceneReader& reader, const json& document, SceneFile& resu
     }
 }
 
+/// A "material" object (the scene's or an object's): ka, kd, ks, n.
+MaterialFields material_fields(const SceneReader& reader, const json& material, const json::json_pointer& material_at,
+                               std::vector<std::string>* warnings) {
+    MaterialFields result;
+    reader.require_object(material, material_at);
+    reader.warn_unknown(material, material_at, {"ka", "kd", "ks", "n"}, warnings);
+    if (const json* ka = reader.optional_field(material, material_at, "ka")) {
+        result.ka = reader.coefficient(*ka, material_at / "ka");
+    }
+    if (const json* kd = reader.optional_field(material, material_at, "kd")) {
+        result.kd = reader.coefficient(*kd, material_at / "kd");
+    }
+    if (const json* ks = reader.optional_field(material, material_at, "ks")) {
+        result.ks = reader.coefficient(*ks, material_at / "ks");
+    }
+    if (const json* n = reader.optional_field(material, material_at, "n")) {
+        const double exponent = reader.number(*n, material_at / "n");
+        if (exponent < 0.0) reader.fail(material_at / "n", "expected a non-negative number, got " + n->dump());
+        result.n = static_cast<float>(exponent);
+    }
+    return result;
+}
+
 void read_material(const SceneReader& reader, const json& document, SceneFile& result) {
     const json::json_pointer root;
     const json* material = reader.optional_field(document, root, "material");
     if (material == nullptr) return;
-    const json::json_pointer material_at = root / "material";
-    reader.require_object(*material, material_at);
-    reader.warn_unknown(*material, material_at, {"ka", "kd", "ks", "n"}, &result.warnings);
-    if (const json* ka = reader.optional_field(*material, material_at, "ka")) {
-        result.material.ka = reader.coefficient(*ka, material_at / "ka");
+    result.material = material_fields(reader, *material, root / "material", &result.warnings);
+}
+
+NormalSource normal_source(const SceneReader& reader, const json& value, const json::json_pointer& where) {
+    const std::string text = reader.string(value, where);
+    try {
+        return parse_normal_source(text);
+    } catch (const std::invalid_argument& error) {
+        reader.fail(where, error.what());
     }
-    if (const json* kd = reader.optional_field(*material, material_at, "kd")) {
-        result.material.kd = reader.coefficient(*kd, material_at / "kd");
+}
+
+/// A 4x4 "transform": a list of 4 rows of 4 finite numbers, the last row 0 0 0 1.
+glm::dmat4 matrix_field(const SceneReader& reader, const json& value, const json::json_pointer& where) {
+    const char* expected = "expected a 4x4 matrix as a list of 4 rows of 4 numbers, the last row [0, 0, 0, 1]";
+    if (!value.is_array() || value.size() != 4) reader.fail(where, std::string(expected) + ", got " + type_of(value));
+    glm::dmat4 m(1.0);
+    for (std::size_t row = 0; row < 4; ++row) {
+        const json& cells = value[row];
+        if (!cells.is_array() || cells.size() != 4) {
+            reader.fail(where / row, std::string(expected) + "; this row is " + type_of(cells));
+        }
+        for (std::size_t column = 0; column < 4; ++column) {
+            // glm is column-major: m[column][row].
+            m[static_cast<glm::length_t>(column)][static_cast<glm::length_t>(row)] =
+                reader.number(cells[column], where / row / column);
+        }
     }
-    if (const json* ks = reader.optional_field(*material, material_at, "ks")) {
-        result.material.ks = reader.coefficient(*ks, material_at / "ks");
+    if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0) {
+        reader.fail(where / 3, std::string(expected) + "; got " + value[3].dump());
     }
-    if (const json* n = reader.optional_field(*material, material_at, "n")) {
-        const double exponent = reader.number(*n, material_at / "n");
-        if (exponent < 0.0) reader.fail(material_at / "n", "expected a non-negative number, got " + n->dump());
-        result.material.n = static_cast<float>(exponent);
+    return m;
+}
+
+/// An object's model matrix must be finite and invertible: its 3x3 part's
+/// determinant is compared with the product of its rows' lengths (Hadamard's
+/// bound), so the test does not depend on the object's size.
+void check_invertible(const SceneReader& reader, const glm::dmat4& m, const json::json_pointer& where,
+                      const std::string& object) {
+    const glm::dmat3 linear(m);
+    const double determinant = glm::determinant(linear);
+    double bound = 1.0;
+    for (glm::length_t row = 0; row < 3; ++row) {
+        bound *= std::sqrt(linear[0][row] * linear[0][row] + linear[1][row] * linear[1][row] +
+                           linear[2][row] * linear[2][row]);
+    }
+    for (glm::length_t column = 0; column < 4; ++column) {
+        for (glm::length_t row = 0; row < 4; ++row) {
+            if (!std::isfinite(m[column][row])) {
+                reader.fail(where, object + ": the model matrix is not finite (check the scale)");
+            }
+        }
+    }
+    if (!std::isfinite(determinant) || !std::isfinite(bound)) {
+        reader.fail(where, object + ": the model matrix's determinant is not finite (values too large)");
+    }
+    if (!(std::abs(determinant) > 1e-12 * bound)) {
+        reader.fail(where, object + ": the model matrix is singular (determinant " + std::to_string(determinant) +
+                               "); expected an invertible transform (no zero scale, no flattened axis)");
+    }
+}
+
+/// One entry of "objects".
+SceneFileObject read_object(const SceneReader& reader, const json& value, const json::json_pointer& at,
+                            std::size_t index, const std::string& folder, std::vector<std::string>* warnings) {
+    const json& object = reader.require_object(value, at);
+    reader.warn_unknown(object, at, {"mesh", "transform", "translation", "rotation", "scale", "material", "normals"},
+                        warnings);
+    SceneFileObject result;
+    const std::string relative =
+        reader.string(reader.required_field(object, at, "mesh", "a mesh file name (.obj, .ply, .stl, .gltf, .glb)"),
+                      at / "mesh");
+    if (relative.empty()) {
+        reader.fail(at / "mesh", "expected a mesh file name (.obj, .ply, .stl, .gltf, .glb), got an empty string");
+    }
+    const std::filesystem::path mesh_path(relative);
+    result.mesh_path = mesh_path.is_absolute() || folder.empty() ? mesh_path.string()
+                                                                 : (std::filesystem::path(folder) / mesh_path).string();
+    result.name = "objects[" + std::to_string(index) + "] (" + relative + ")";
+
+    const json* transform = reader.optional_field(object, at, "transform");
+    const json* translation = reader.optional_field(object, at, "translation");
+    const json* rotation = reader.optional_field(object, at, "rotation");
+    const json* scale = reader.optional_field(object, at, "scale");
+    if (transform != nullptr) {
+        if (translation != nullptr || rotation != nullptr || scale != nullptr) {
+            reader.fail(at, "both \"transform\" and translation/rotation/scale; expected one form: a 4x4 "
+                            "\"transform\", or any of \"translation\", \"rotation\", \"scale\"");
+        }
+        result.transform = matrix_field(reader, *transform, at / "transform");
+        check_invertible(reader, result.transform, at / "transform", result.name);
+    } else if (translation != nullptr || rotation != nullptr || scale != nullptr) {
+        glm::dvec3 t(0.0);
+        glm::dvec4 q(0.0, 0.0, 0.0, 1.0);
+        glm::dvec3 s(1.0);
+        if (translation != nullptr) t = reader.triple(*translation, at / "translation");
+        if (rotation != nullptr) {
+            const json::json_pointer rotation_at = at / "rotation";
+            if (!rotation->is_array() || rotation->size() != 4) {
+                reader.fail(rotation_at, "expected a unit quaternion [x, y, z, w], got " + type_of(*rotation));
+            }
+            for (glm::length_t i = 0; i < 4; ++i) {
+                q[i] = reader.number((*rotation)[static_cast<std::size_t>(i)], rotation_at / static_cast<std::size_t>(i));
+            }
+            const double length = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+            if (!(std::abs(length - 1.0) <= 1e-6)) {
+                reader.fail(rotation_at, "expected a unit quaternion [x, y, z, w] (length 1 to 1e-6), got length " +
+                                             std::to_string(length));
+            }
+        }
+        if (scale != nullptr) {
+            const json::json_pointer scale_at = at / "scale";
+            if (scale->is_number()) {
+                s = glm::dvec3(reader.number(*scale, scale_at));
+            } else if (scale->is_array()) {
+                s = reader.triple(*scale, scale_at);
+            } else {
+                reader.fail(scale_at, "expected a number or [sx, sy, sz], got " + type_of(*scale));
+            }
+            if (s.x == 0.0 || s.y == 0.0 || s.z == 0.0) {
+                reader.fail(scale_at, result.name + ": a zero scale makes the model matrix singular; expected "
+                                                    "non-zero scales (negative ones mirror)");
+            }
+        }
+        result.transform = compose_transform(t, q, s);
+        check_invertible(reader, result.transform, at, result.name);
+    }
+    if (const json* material = reader.optional_field(object, at, "material")) {
+        result.material = material_fields(reader, *material, at / "material", warnings);
+    }
+    if (const json* normals = reader.optional_field(object, at, "normals")) {
+        result.normals = normal_source(reader, *normals, at / "normals");
+    }
+    return result;
+}
+
+void read_objects(const SceneReader& reader, const json& document, const std::string& folder, SceneFile& result) {
+    const json::json_pointer root;
+    const json* objects = reader.optional_field(document, root, "objects");
+    if (objects == nullptr) return;
+    const json::json_pointer objects_at = root / "objects";
+    if (reader.optional_field(document, root, "mesh") != nullptr) {
+        reader.fail(root, "both \"mesh\" and \"objects\"; expected exactly one of them");
+    }
+    if (!objects->is_array() || objects->empty()) {
+        reader.fail(objects_at, "expected a non-empty array of objects, got " + type_of(*objects));
+    }
+    for (std::size_t i = 0; i < objects->size(); ++i) {
+        result.objects.push_back(read_object(reader, (*objects)[i], objects_at / i, i, folder, &result.warnings));
     }
 }
 
@@ -275,9 +433,14 @@ SceneFile parse_scene_json(const std::string& text, const std::string& name, con
 
     SceneFile result;
     reader.warn_unknown(document, root,
-                        {"mesh", "camera", "image", "material", "ambient", "lights", "shader", "lighting"},
+                        {"mesh", "objects", "camera", "image", "material", "ambient", "lights", "shader",
+                         "lighting", "normals"},
                         &result.warnings);
     read_mesh_path(reader, document, folder, result);
+    read_objects(reader, document, folder, result);
+    if (const json* normals = reader.optional_field(document, root, "normals")) {
+        result.scene.normals = normal_source(reader, *normals, root / "normals");
+    }
     read_camera(reader, document, result);
     read_image(reader, document, result);
     read_material(reader, document, result);
@@ -303,6 +466,24 @@ SceneFile read_scene_file(const std::string& path) {
     text << in.rdbuf();
     if (in.bad()) throw FileError(path + ": cannot read scene file: " + std::strerror(errno));
     return parse_scene_json(text.str(), path, std::filesystem::path(path).parent_path().string());
+}
+
+glm::dmat4 compose_transform(const glm::dvec3& translation, const glm::dvec4& rotation, const glm::dvec3& scale) {
+    const double length = std::sqrt(rotation.x * rotation.x + rotation.y * rotation.y + rotation.z * rotation.z +
+                                    rotation.w * rotation.w);
+    const double x = rotation.x / length, y = rotation.y / length, z = rotation.z / length, w = rotation.w / length;
+    // The rotation matrix of a unit quaternion (as glTF), rows r, columns c: R[r][c].
+    const double r[3][3] = {
+        {1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - z * w), 2.0 * (x * z + y * w)},
+        {2.0 * (x * y + z * w), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - x * w)},
+        {2.0 * (x * z - y * w), 2.0 * (y * z + x * w), 1.0 - 2.0 * (x * x + y * y)},
+    };
+    glm::dmat4 m(1.0);
+    for (glm::length_t c = 0; c < 3; ++c) {
+        for (glm::length_t row = 0; row < 3; ++row) m[c][row] = r[row][c] * scale[c];  // R * S: column c scaled by s_c
+    }
+    m[3] = glm::dvec4(translation, 1.0);  // T * (R * S)
+    return m;
 }
 
 PhongMaterial default_material() { return PhongMaterial{}; }
@@ -369,6 +550,7 @@ std::string scene_to_json(const Scene& scene, const std::string& mesh_path) {
             << ", \"intensity\": " << format_triple(scene.lights[i].intensity) << " }";
     }
     out << (scene.lights.empty() ? "],\n" : "\n  ],\n");
+    if (scene.normals == NormalSource::file) out << "  \"normals\": \"file\",\n";
     out << "  \"shader\": \"" << to_string(scene.shader) << "\",\n";
     out << "  \"lighting\": \"" << to_string(scene.lighting) << "\"\n";
     out << "}\n";

@@ -4,6 +4,7 @@
 
 #include "batch_manifest.hpp"
 #include "phongrast/io/error.hpp"
+#include "phongrast/option_names.hpp"
 
 using namespace phongrast::cli;
 
@@ -97,10 +98,30 @@ TEST_CASE("a bad manifest line names the line and the field") {
     CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"size\": \"12by8\"}"), Catch::Contains("/size: expected \"WxH\""));
     CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"samples\": 17}"), Catch::Contains("/samples: expected a whole number from 1 to 16"));
     CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"mode\": \"fast\"}"), Catch::Contains("/mode: expected \"exact\" or \"seed\""));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"texture_filter\": \"cubic\"}"),
+               Catch::Contains("/texture_filter: expected \"bilinear\", \"nearest\" or \"trilinear\", got \"cubic\""));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"visibility\": \"zbuffer\"}"),
+               Catch::Contains("/visibility: expected \"painter\" or \"depth-buffer\""));
     CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"output\": \"a.jpg\"}"), Catch::Contains("/output: a.jpg: unknown image format"));
     CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"output\": \"/tmp/a.png\"}"), Catch::Contains("/output: '/tmp/a.png' must stay inside"));
     CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"output\": \"x/../../a.png\"}"), Catch::Contains("must stay inside"));
     CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"output\": \"{what}.png\"}"), Catch::Contains("/output: unknown placeholder"));
+}
+
+TEST_CASE("the library's named options are manifest fields, with every spelling the command line takes") {
+    const Manifest manifest = parse_manifest(
+        "{\"mesh\": \"a.obj\", \"visibility\": \"depth_buffer\", \"texture_filter\": \"nearest\", \"overdraw\": \"all\"}\n"
+        "{\"mesh\": \"b.obj\"}\n",
+        "m.jsonl", "/data", JobSettings{});
+    REQUIRE(manifest.jobs.size() == 2);
+    using namespace phongrast;
+    const RenderOptions options = options_from_names(manifest.jobs[0].settings.options);
+    CHECK(options.visibility == Visibility::depth_buffer);
+    CHECK(options.texture_filter == TextureFilter::nearest);
+    CHECK(options.overdraw == Overdraw::shade_all);
+    const RenderOptions defaults = options_from_names(manifest.jobs[1].settings.options);
+    CHECK(defaults.visibility == Visibility::painter);
+    CHECK(defaults.texture_filter == TextureFilter::bilinear);
 }
 
 TEST_CASE("two jobs (or two views of one) writing the same image are an error naming both lines") {

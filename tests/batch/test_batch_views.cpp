@@ -77,10 +77,11 @@ TEST_CASE("the last mesh is kept for the next job, and read again when the file 
     TemporaryFolder folder;
     const std::string path = folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     LastMesh meshes;
-    CHECK(meshes.read(path).mesh.positions.size() == 3);
-    CHECK(meshes.read(path).mesh.positions.size() == 3);
+    const auto first = meshes.read(path);
+    CHECK(first->mesh.positions.size() == 3);
+    CHECK(meshes.read(path).get() == first.get());  // kept: the same file, not read again
     folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
-    CHECK(meshes.read(path).mesh.positions.size() == 4);
+    CHECK(meshes.read(path)->mesh.positions.size() == 4);
     folder.write("m.obj", "v 0 0 0\nf 1 2 3\n");
     CHECK_THROWS_AS(meshes.read(path), phongrast::io::FileError);
     CHECK_THROWS_AS(meshes.read(folder.file("missing.obj")), phongrast::io::FileError);

@@ -10,8 +10,7 @@
 #include <sys/wait.h>
 
 #include "io_test_files.hpp"
-#include "phongrast/io/obj_file.hpp"
-#include "phongrast/io/scene_file.hpp"
+#include "phongrast/io/scene_load.hpp"
 #include "phongrast/render.hpp"
 
 struct Run {
@@ -40,14 +39,10 @@ inline Run run_cli(const TemporaryFolder& folder, const std::string& arguments, 
     return run;
 }
 
-/// The scene a scene file describes, loaded by the library as the program does
-/// (its mesh, and its material resolved from the scene, the MTL and the defaults).
+/// The scene a scene file describes, loaded by the library's scene builder
+/// (io::load_scene), the one the program uses.
 inline phongrast::Scene load_scene_with_library(const std::string& scene_path) {
-    phongrast::io::SceneFile file = phongrast::io::read_scene_file(scene_path);
-    phongrast::io::ObjFile obj = phongrast::io::read_obj(file.mesh_path);
-    file.scene.mesh = std::move(obj.mesh);
-    file.scene.material = phongrast::io::resolve_material(file.material, obj.material, nullptr);
-    return file.scene;
+    return phongrast::io::load_scene(scene_path).scene;
 }
 
 #endif  // PHONGRAST_TESTS_CLI_CLI_RUN_HPP

@@ -10,6 +10,7 @@
 #include "phongrast/io/auto_scene.hpp"
 #include "phongrast/io/obj_file.hpp"
 #include "phongrast/io/scene_file.hpp"
+#include "phongrast/io/scene_load.hpp"
 
 namespace phongrast::support {
 namespace {
@@ -109,13 +110,6 @@ std::vector<NamedScene> comparison_scenes(int rows, std::vector<std::string>& no
     return scenes;
 }
 
-Scene read_scene_with_mesh(const std::string& path) {
-    io::SceneFile file = io::read_scene_file(path);
-    io::ObjFile obj = io::read_obj(file.mesh_path);
-    Scene scene = std::move(file.scene);
-    scene.mesh = std::move(obj.mesh);
-    scene.material = io::resolve_material(file.material, obj.material, nullptr);
-    return scene;
-}
+Scene read_scene_with_mesh(const std::string& path) { return io::load_scene(path).scene; }
 
 }  // namespace phongrast::support

@@ -15,6 +15,14 @@ namespace phongrast::io {
 /// the mesh, Phong shader and full lighting.
 Scene frame_mesh(Mesh mesh, int rows, int columns);
 
+/// The same recipe for a scene already built (one mesh or several objects):
+/// frames every vertex of every object in world space (after its model
+/// matrix), and sets the camera, image size, ambient, lights and base
+/// material as frame_mesh does; keeps the meshes, objects, shader and
+/// lighting. Throws std::invalid_argument for a scene without vertices or
+/// with a non-finite one.
+void frame_scene(Scene& scene, int rows, int columns);
+
 }  // namespace phongrast::io
 
 #endif  // PHONGRAST_IO_AUTO_SCENE_HPP

@@ -1,12 +1,16 @@
-// Scene files (docs/scene-format.md, contract version 1) read with
-// nlohmann-json, and written back for the user to copy.
+// Scene files (docs/scene-format.md, contract version 2) read with
+// nlohmann-json, and written back for the user to copy. This reads the file
+// alone; io::load_scene (scene_load.hpp) loads its meshes too.
 //
-// Required: "mesh" (unless the caller supplies one, e.g. `--mesh`),
-// "camera" with "eye", "lookat", "focal", "sensor", and "image" with "height"
-// and "width". Optional, with these defaults: camera.up [0,1,0],
-// image.background [1,1,1], ambient [0.2,0.2,0.2], lights [] (ambient only),
-// shader "phong", lighting "full", material: see resolve_material.
-// Unknown fields are not an error: they are listed in `warnings`.
+// Required: "mesh" or "objects" (not both; neither only when the caller
+// supplies a mesh, e.g. `--mesh`), "camera" with "eye", "lookat", "focal",
+// "sensor", and "image" with "height" and "width". Optional, with these
+// defaults: camera.up [0,1,0], image.background [1,1,1], ambient
+// [0.2,0.2,0.2], lights [] (ambient only), shader "phong", lighting "full",
+// normals "computed", material: see resolve_material.
+// Unknown fields are not an error (the contract: "extra fields are allowed
+// and ignored with a warning"): they are listed in `warnings`, named by their
+// JSON pointer (/objects/2/colour names the object and the field).
 #ifndef PHONGRAST_IO_SCENE_FILE_HPP
 #define PHONGRAST_IO_SCENE_FILE_HPP
 
@@ -14,24 +18,39 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "phongrast/lighting.hpp"
+#include "phongrast/material.hpp"
 #include "phongrast/render.hpp"
 
 namespace phongrast::io {
 
-/// The material fields a scene file gave; absent ones come from the MTL or defaults.
-struct MaterialFields {
-    std::optional<glm::vec3> ka, kd, ks;
-    std::optional<float> n;
+/// The material fields a scene file gave (the library's type: material.hpp).
+using MaterialFields = phongrast::MaterialFields;
+
+/// One entry of "objects", its mesh not loaded yet.
+struct SceneFileObject {
+    /// "mesh" resolved against the scene file's folder.
+    std::string mesh_path;
+    /// "transform", or T * R * S from "translation", "rotation", "scale"
+    /// (identity when none is given). Finite, last row 0 0 0 1, not singular.
+    glm::dmat4 transform{1.0};
+    MaterialFields material;              ///< the object's "material" fields
+    std::optional<NormalSource> normals;  ///< the object's "normals", if given
+    std::string name;                     ///< "objects[2] (cup.glb)", for messages
 };
 
 struct SceneFile {
-    /// Everything but the mesh (not loaded yet) and the material (see resolve_material).
+    /// Everything but the meshes (not loaded yet) and the material (see
+    /// resolve_material); scene.normals is the scene's "normals".
     Scene scene;
     /// "mesh" resolved against the scene file's folder; empty when absent.
     std::string mesh_path;
+    /// "objects", in order; empty for a scene with "mesh".
+    std::vector<SceneFileObject> objects;
     MaterialFields material;
     /// One line per ignored unknown field, naming it ("scene.json: ignoring unknown field /foo").
     std::vector<std::string> warnings;
@@ -56,8 +75,14 @@ PhongMaterial resolve_material(const MaterialFields& fields,
                                const std::optional<PhongMaterial>& from_mtl,
                                std::vector<std::string>* defaults_used);
 
-/// A scene file (pretty JSON) describing `scene` with "mesh": mesh_path.
+/// A scene file (pretty JSON) describing `scene` with "mesh": mesh_path
+/// (and "normals": "file" when scene.normals says so).
 std::string scene_to_json(const Scene& scene, const std::string& mesh_path);
+
+/// T * R * S (contract "Objects"): `rotation` a unit quaternion [x, y, z, w]
+/// (normalised here), `scale` per axis. The model matrix of an object given
+/// by translation, rotation and scale.
+glm::dmat4 compose_transform(const glm::dvec3& translation, const glm::dvec4& rotation, const glm::dvec3& scale);
 
 }  // namespace phongrast::io
 
