@@ -107,7 +107,7 @@ PngSettings png_settings(PngCompression compression) {
     // shading) and costs one subtraction a byte.
     switch (compression) {
     case PngCompression::fast: return {1, PngFilter::up};
-    case PngCompression::small: return {9, PngFilter::paeth};
+    case PngCompression::small: return {9, PngFilter::up};
     case PngCompression::standard: break;
     }
     return {4, PngFilter::up};
