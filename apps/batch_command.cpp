@@ -41,6 +41,7 @@ void add_batch_command(CLI::App& app, BatchCommand& command) {
         ->check(CLI::Range(1, 16));
     batch->add_option("--mode", command.defaults.mode, "Default mode (exact or seed) for jobs that set none")
         ->check(CLI::IsMember({"exact", "seed"}));
+    add_png_compression_flag(*batch, command.png_compression);
     batch->add_flag("-q,--quiet", command.quiet, "Print nothing but errors");
 }
 
@@ -73,6 +74,7 @@ int run_batch(const BatchCommand& command) {
     run.force = command.force;
     run.quiet = command.quiet;
     run.threads = command.threads;
+    run.image_options.png_compression = io::parse_png_compression(command.png_compression);
     return run_shard(jobs, run);
 }
 
