@@ -1,10 +1,7 @@
 #include "phongrast/io/aov_file.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,7 +25,6 @@ void require_plane_size(std::size_t size, const Image& image, const std::string&
                         " values for " + std::to_string(image.pixels.size()) + " pixels");
     }
 }
-
 
 }  // namespace
 
