@@ -26,10 +26,13 @@
 set -eu
 cd "$(dirname "$0")/.."
 baseline=$(realpath "$1")
-baseline_python=${2:-}
+baseline_python=${2:+$(realpath "$2")}
 phongrast=$(realpath build/release/apps/phongrast)
 python_dir=$(realpath build/release/python)
 bench_png=build/release/bench/bench_png_encode
+# The interpreter the module was built for (src/python/CMakeLists.txt chose it).
+python=$(sed -n 's/^Python3_EXECUTABLE:FILEPATH=//p' build/release/CMakeCache.txt)
+python=${python:-/usr/bin/python3}
 repeats=${REPEATS:-3}
 work=${WORK:-$(mktemp -d /tmp/phongrast-bench-startup-XXXXXX)}
 mkdir -p "$work"
@@ -43,31 +46,45 @@ for i in $(seq 0 99); do
   [ -e "$work/knot$i.obj" ] || "$phongrast" generate -q -o "$work/knot$i.obj" --segments $((200 + 2 * i)) --sides 20
 done
 
-# hyperfine median in ms of each command, one per line.
+# hyperfine median wall time in ms of each command, one per line; cpu_ms: the
+# mean CPU time (user + system) of each, less disturbed by a busy machine.
 hyper() {
-  hyperfine -N --warmup 5 --runs "${RUNS:-40}" --export-json "$work/h.json" "$@" > /dev/null 2>&1
+  hyperfine -N --warmup 3 --runs "${RUNS:-40}" --export-json "$work/h.json" "$@" > /dev/null 2>&1
   python3 -c "import json; [print('%.2f' % (1e3 * r['median'])) for r in json.load(open('$work/h.json'))['results']]"
+  python3 -c "import json; print(' '.join('%.2f' % (1e3 * (r['user'] + r['system'])) for r in json.load(open('$work/h.json'))['results']))" > "$work/cpu.txt"
+  python3 -c "import json; print(' '.join('%.2f' % (1e3 * r['min']) for r in json.load(open('$work/h.json'))['results']))" > "$work/min.txt"
 }
 
 echo "start-up ..." >&2
 cd "$work"
-mapfile -t t < <(hyper "$baseline --version" "$phongrast --version" \
+hyper "$baseline --version" "$phongrast --version" \
   "$baseline render knot10k.obj --size 256x256 -q -o base.png" "$phongrast render knot10k.obj --size 256x256 -q -o new.png" \
-  "$phongrast thumbnail knot10k.obj thumb.png --size 256")
-mapfile -t p < <(PYTHONPATH=$python_dir hyper "python3 -c 'import numpy'" "python3 -c 'import numpy, phongrast'")
+  "$phongrast thumbnail knot10k.obj thumb.png --size 256" > "$work/wall.txt"
+mapfile -t t < "$work/wall.txt"
+read -r -a tc < "$work/cpu.txt"
+read -r -a tm < "$work/min.txt"
+PYTHONPATH=$python_dir hyper "$python -c 'import numpy'" "$python -c 'import numpy, phongrast'" > "$work/wall.txt"
+mapfile -t p < "$work/wall.txt"
+read -r -a pc < "$work/cpu.txt"
+read -r -a pm < "$work/min.txt"
 if [ -n "$baseline_python" ]; then
-  mapfile -t q < <(PYTHONPATH=$(realpath "$baseline_python") hyper "python3 -c 'import numpy'" "python3 -c 'import numpy, phongrast'")
+  PYTHONPATH=$baseline_python hyper "$python -c 'import numpy'" "$python -c 'import numpy, phongrast'" > "$work/wall.txt"
+  mapfile -t q < "$work/wall.txt"
+  read -r -a qc < "$work/cpu.txt"
+  read -r -a qm < "$work/min.txt"
 else
-  q=(0 0)
+  q=(0 0); qc=(0 0); qm=(0 0)
 fi
 cd - > /dev/null
-echo "| process (hyperfine median, $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)) | before | after | goal |"
+echo "| process (wall median / wall min / CPU user+sys mean, ${RUNS:-40} runs; $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)) | before | after | goal (wall) |"
 echo "|---|---|---|---|"
-echo "| \`phongrast --version\` | ${t[0]} ms | ${t[1]} ms | <= 15 ms |"
-echo "| \`phongrast render knot10k.obj --size 256x256 -o t.png\` (10k triangles) | ${t[2]} ms | ${t[3]} ms | <= 30 ms |"
-echo "| \`phongrast thumbnail knot10k.obj t.png --size 256\` | (no such command) | ${t[4]} ms | |"
-awk -v a="${q[0]}" -v b="${q[1]}" -v c="${p[0]}" -v d="${p[1]}" 'BEGIN {
-  printf "| `import phongrast` on top of numpy | %s | %.2f ms | <= 20 ms |\n", (b > 0 ? sprintf("%.2f ms", b - a) : "not measured"), d - c }'
+echo "| \`phongrast --version\` | ${t[0]} / ${tm[0]} / ${tc[0]} ms | ${t[1]} / ${tm[1]} / ${tc[1]} ms | <= 15 ms |"
+echo "| \`phongrast render knot10k.obj --size 256x256 -o t.png\` (10k triangles) | ${t[2]} / ${tm[2]} / ${tc[2]} ms | ${t[3]} / ${tm[3]} / ${tc[3]} ms | <= 30 ms |"
+echo "| \`phongrast thumbnail knot10k.obj t.png --size 256\` | (no such command) | ${t[4]} / ${tm[4]} / ${tc[4]} ms | |"
+awk -v a="${q[0]}" -v b="${q[1]}" -v c="${p[0]}" -v d="${p[1]}" -v ac="${qc[0]}" -v bc="${qc[1]}" -v cc="${pc[0]}" -v dc="${pc[1]}" \
+    -v am="${qm[0]}" -v bm="${qm[1]}" -v cm="${pm[0]}" -v dm="${pm[1]}" 'BEGIN {
+  printf "| `import phongrast` on top of `import numpy` (difference of the two) | %s | %.2f / %.2f / %.2f ms | <= 20 ms |\n",
+         (b > 0 ? sprintf("%.2f / %.2f / %.2f ms", b - a, bm - am, bc - ac) : "not measured"), d - c, dm - cm, dc - cc }'
 echo
 
 echo "PNG encoding ..." >&2
