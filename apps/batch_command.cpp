@@ -45,6 +45,7 @@ void add_batch_command(CLI::App& app, BatchCommand& command) {
                           "Default for jobs that set none: " + option.help)
             ->check(CLI::IsMember(accepted_names(option)));
     }
+    add_png_compression_flag(*batch, command.png_compression);
     batch->add_flag("-q,--quiet", command.quiet, "Print nothing but errors");
 }
 
@@ -77,6 +78,7 @@ int run_batch(const BatchCommand& command) {
     run.force = command.force;
     run.quiet = command.quiet;
     run.threads = command.threads;
+    run.image_options.png_compression = io::parse_png_compression(command.png_compression);
     return run_shard(jobs, run);
 }
 

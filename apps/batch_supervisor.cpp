@@ -72,7 +72,7 @@ private:
             if (::getppid() != parent) _exit(3);
             int status = 0;
             try {
-                run_worker(jobs_, next_, run_.output_folder, run_.threads, ends[1]);
+                run_worker(jobs_, next_, run_.output_folder, run_.threads, run_.image_options, ends[1]);
             } catch (const std::exception& error) {
                 std::cerr << "phongrast: internal error in the batch worker: " << error.what() << '\n';
                 status = 3;

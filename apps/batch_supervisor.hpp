@@ -20,6 +20,7 @@
 
 #include "batch_manifest.hpp"
 #include "batch_shard.hpp"
+#include "phongrast/io/image_file.hpp"
 
 namespace phongrast::cli {
 
@@ -30,6 +31,7 @@ struct ShardRun {
     bool force = false;        ///< render even the jobs whose images exist
     bool quiet = false;
     int threads = 0;
+    io::ImageWriteOptions image_options;  ///< --png-compression
 };
 
 /// Renders `jobs` (this shard's, in manifest order). Returns the exit status:

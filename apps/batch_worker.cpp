@@ -69,7 +69,8 @@ void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, int
     }
 }
 
-void write_images(std::size_t count, BoundedQueue<WriteItem>& pending, Reporter& reporter) {
+void write_images(std::size_t count, BoundedQueue<WriteItem>& pending, Reporter& reporter,
+                  const io::ImageWriteOptions& image_options) {
     std::string error;  // of the job being written
     for (std::size_t finished = 0; finished < count;) {
         WriteItem item = pending.pop();
@@ -78,7 +79,7 @@ void write_images(std::size_t count, BoundedQueue<WriteItem>& pending, Reporter&
             try {
                 const fs::path folder = fs::path(item.path).parent_path();
                 if (!folder.empty()) fs::create_directories(folder);
-                io::write_image(*item.image, item.path);
+                io::write_image(*item.image, item.path, image_options);
             } catch (const std::exception& failure) {
                 error = failure.what();
             }
@@ -126,12 +127,12 @@ void render_job(Renderer& renderer, std::size_t position, const BatchJob& job, L
 }  // namespace
 
 void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, const std::string& output_folder,
-                int threads, int report_fd) {
+                int threads, const io::ImageWriteOptions& image_options, int report_fd) {
     Reporter reporter(report_fd);
     BoundedQueue<LoadedJob> loaded(2);
     BoundedQueue<WriteItem> pending(4);
     std::thread loader([&] { load_ahead(jobs, first, threads, loaded); });
-    std::thread writer([&] { write_images(jobs.size() - first, pending, reporter); });
+    std::thread writer([&] { write_images(jobs.size() - first, pending, reporter, image_options); });
     Renderer renderer;
     for (std::size_t position = first; position < jobs.size(); ++position) {
         reporter.send({{"start", position}});

@@ -18,12 +18,13 @@
 #include <vector>
 
 #include "batch_manifest.hpp"
+#include "phongrast/io/image_file.hpp"
 
 namespace phongrast::cli {
 
 /// Renders jobs[first..] into `output_folder`, reporting on `report_fd`.
 void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, const std::string& output_folder,
-                int threads, int report_fd);
+                int threads, const io::ImageWriteOptions& image_options, int report_fd);
 
 }  // namespace phongrast::cli
 

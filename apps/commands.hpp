@@ -12,12 +12,16 @@
 
 namespace phongrast::cli {
 
+/// --png-compression fast|default|small (png_compression_flag.cpp), into `value`.
+void add_png_compression_flag(CLI::App& command, std::string& value);
+
 struct RenderCommand {
     SceneFlags scene;
     int repeat = 0;  ///< 0: one render, no warm-up
     std::string stats_json;
     std::string aovs;          ///< --aov: "depth,normal,id,alpha" into one EXR
     bool transparent = false;  ///< --transparent: PNG with alpha, background transparent
+    std::string png_compression = "default";
 };
 void add_render_command(CLI::App& app, RenderCommand& command);
 int run_render(const RenderCommand& command);
@@ -50,9 +54,21 @@ struct BatchCommand {
     int threads = 0;
     int samples = 0;      ///< 0: not given
     JobSettings defaults;  ///< --shader, --lighting, --size and the named options (--mode, ...)
+    std::string png_compression = "default";
 };
 void add_batch_command(CLI::App& app, BatchCommand& command);
 int run_batch(const BatchCommand& command);
+
+/// phongrast thumbnail INPUT OUTPUT --size N: the freedesktop thumbnailer
+/// (Exec=phongrast thumbnail %i %o --size %s), thumbnail_command.cpp.
+struct ThumbnailCommand {
+    std::string input;
+    std::string output;
+    int size = 256;
+    std::string png_compression = "default";
+};
+void add_thumbnail_command(CLI::App& app, ThumbnailCommand& command);
+int run_thumbnail(const ThumbnailCommand& command);
 
 }  // namespace phongrast::cli
 

@@ -24,10 +24,12 @@ int main(int argc, char** argv) {
     SheetCommand sheet;
     GenerateCommand generate;
     BatchCommand batch;
+    ThumbnailCommand thumbnail;
     add_render_command(app, render);
     add_sheet_command(app, sheet);
     add_generate_command(app, generate);
     add_batch_command(app, batch);
+    add_thumbnail_command(app, thumbnail);
 
     try {
         app.parse(argc, argv);
@@ -49,6 +51,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("sheet")) return run_sheet(sheet);
         if (app.got_subcommand("generate")) return run_generate(generate);
         if (app.got_subcommand("batch")) return run_batch(batch);
+        if (app.got_subcommand("thumbnail")) return run_thumbnail(thumbnail);
     } catch (const phongrast::RenderCancelled&) {
         // Only Ctrl-C cancels here; every file is written by rename, so none is half-written.
         std::cerr << "\nphongrast: interrupted; no output written\n";

@@ -38,6 +38,7 @@ void add_render_command(CLI::App& app, RenderCommand& command) {
     render->add_option("--aov", command.aovs,
                        "Extra outputs next to the colour, written into the one .exr as channels: depth (Z), normal "
                        "(N.X, N.Y, N.Z), id (triangle index, unsigned), alpha (A); comma-separated, or all");
+    add_png_compression_flag(*render, command.png_compression);
     render->add_flag("--transparent", command.transparent,
                      "Write a PNG with an alpha channel: the background transparent, edges partly so");
 }
@@ -91,12 +92,15 @@ int run_render(const RenderCommand& command) {
     messages.progress_done();
 
     stop_if_interrupted();
+    io::ImageWriteOptions image_options;
+    image_options.png_compression = io::parse_png_compression(command.png_compression);
     if (prepared.options.aovs.any() && format == io::ImageFormat::exr) {
         io::write_exr_with_aovs(result.image, result.aovs, output);
     } else if (command.transparent) {
-        io::write_png_with_alpha(result.image, result.aovs.alpha, prepared.scene.image.background, output);
+        io::write_png_with_alpha(result.image, result.aovs.alpha, prepared.scene.image.background, output,
+                                 image_options);
     } else {
-        io::write_image(result.image, output);
+        io::write_image(result.image, output, image_options);
     }
     messages.result(summary_line(result.stats, timing.seconds.back(), prepared.load_seconds));
     if (command.repeat > 0) {

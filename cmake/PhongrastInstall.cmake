@@ -6,6 +6,9 @@
 #   <prefix>/include/phongrast/            public headers (+ the generated version.hpp)
 #   <prefix>/lib/libphongrast.a            and libphongrast_io.a when built
 #   <prefix>/bin/phongrast                 the command-line program when built
+#   <prefix>/lib/phongrast/phongrast_openimageio.so   OpenImageIO, loaded on first use (with the I/O library)
+#   <prefix>/share/thumbnailers/phongrast.thumbnailer the desktop thumbnailer (with the program)
+#   <prefix>/share/mime/packages/phongrast-mesh-mime.xml  the PLY MIME type Debian 12 lacks
 #   <prefix>/share/phongrast/              the example assets/ when present
 #   <prefix>/lib/cmake/phongrast/          phongrastConfig.cmake, its version file, the targets
 include(CMakePackageConfigHelpers)
@@ -54,10 +57,30 @@ install(FILES "${PROJECT_BINARY_DIR}/include/phongrast/version.hpp"
   COMPONENT phongrast_development
 )
 
+# The OpenImageIO module (src/io/openimageio_module.hpp): loaded on first use,
+# found next to the program or library holding phongrast::io, or here.
+if(TARGET phongrast_openimageio)
+  install(TARGETS phongrast_openimageio
+    LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}/phongrast" COMPONENT phongrast_runtime)
+endif()
+
 # The command-line program is a tool, not something to link: installed, not exported.
 if(TARGET phongrast_cli)
   install(TARGETS phongrast_cli
     RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT phongrast_runtime)
+  # The freedesktop thumbnailer: written at install time so that Exec names the
+  # program where this install put it (cmake --install --prefix included).
+  set(phongrast_mesh_mime_types
+      "model/obj;model/stl;model/x.stl-ascii;model/x.stl-binary;model/gltf+json;model/gltf-binary;model/x-ply;")
+  install(CODE "
+    set(program \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BINDIR}/phongrast\")
+    file(WRITE \"\${CMAKE_CURRENT_BINARY_DIR}/phongrast.thumbnailer\"
+         \"[Thumbnailer Entry]\\nTryExec=\${program}\\nExec=\${program} thumbnail %i %o --size %s\\nMimeType=${phongrast_mesh_mime_types}\\n\")
+    file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_DATADIR}/thumbnailers\"
+         TYPE FILE FILES \"\${CMAKE_CURRENT_BINARY_DIR}/phongrast.thumbnailer\")"
+    COMPONENT phongrast_runtime)
+  install(FILES "${PROJECT_SOURCE_DIR}/cmake/phongrast-mesh-mime.xml"
+    DESTINATION "${CMAKE_INSTALL_DATADIR}/mime/packages" COMPONENT phongrast_runtime)
 endif()
 
 if(IS_DIRECTORY "${PROJECT_SOURCE_DIR}/assets")
@@ -87,6 +110,9 @@ function(phongrast_find_dependency_lines target out)
   foreach(item IN LISTS links)
     if(item MATCHES "^phongrast(::|_|$)")
       continue()  # ours: install(EXPORT) insists they are exported too
+    elseif(item MATCHES "^PkgConfig::(.+)$")
+      # pkg_check_modules(<prefix> IMPORTED_TARGET <module>): here the prefix is the module's name.
+      list(APPEND packages "PkgConfig:${CMAKE_MATCH_1}")
     elseif(item MATCHES "^([A-Za-z0-9_]+)::")
       list(APPEND packages "${CMAKE_MATCH_1}")
     elseif(TARGET "${item}")
@@ -99,6 +125,14 @@ function(phongrast_find_dependency_lines target out)
   list(REMOVE_DUPLICATES packages)
   set(lines "")
   foreach(package IN LISTS packages)
+    if(package MATCHES "^PkgConfig:(.+)$")
+      string(APPEND lines "find_dependency(PkgConfig)\n"
+                          "pkg_check_modules(${CMAKE_MATCH_1} REQUIRED IMPORTED_TARGET ${CMAKE_MATCH_1})\n")
+      continue()
+    elseif(package STREQUAL "JPEG")
+      string(APPEND lines "find_dependency(JPEG)\n")  # CMake's own FindJPEG: no config file
+      continue()
+    endif()
     string(APPEND lines "find_dependency(${package} CONFIG)\n")
     if(package STREQUAL "OpenImageIO")
       # Drops the /usr/include/opencv4 entry Debian's OpenImageIO config names even

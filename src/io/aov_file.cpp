@@ -1,19 +1,16 @@
 #include "phongrast/io/aov_file.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
+#include "exr_file.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/text_file.hpp"
 #include "png_bytes.hpp"
+#include "png_encoder.hpp"
 
 namespace phongrast::io {
 namespace {
@@ -29,17 +26,6 @@ void require_plane_size(std::size_t size, const Image& image, const std::string&
     }
 }
 
-
-void open_output(OIIO::ImageOutput& output, const std::string& temporary, const std::string& path,
-                 const OIIO::ImageSpec& spec) {
-    if (!output.open(temporary, spec)) throw FileError(path + ": cannot write: " + output.geterror());
-}
-
-void finish_output(OIIO::ImageOutput& output, bool written, const std::string& path) {
-    const bool closed = output.close();
-    if (!written || !closed) throw FileError(path + ": write failed: " + output.geterror());
-}
-
 }  // namespace
 
 void write_exr_with_aovs(const Image& image, const AovPlanes& aovs, const std::string& path) {
@@ -51,114 +37,93 @@ void write_exr_with_aovs(const Image& image, const AovPlanes& aovs, const std::s
     require_plane_size(aovs.id.size(), image, path, "id");
     require_plane_size(aovs.uv.size(), image, path, "uv");
 
-    // Channel names and where each value comes from; every channel is 4 bytes wide.
-    std::vector<std::string> names;
-    std::vector<OIIO::TypeDesc> formats;
-    const auto add_channel = [&](const char* name, OIIO::TypeDesc format) {
-        names.push_back(name);
-        formats.push_back(format);
+    // One channel per plane, each read in place by OpenEXR (OpenEXR stores them in alphabetical order).
+    const auto floats = [](const auto& plane, std::size_t offset) {
+        return const_cast<char*>(reinterpret_cast<const char*>(plane.data())) + offset;
     };
-    for (const char* name : {"R", "G", "B"}) add_channel(name, OIIO::TypeDesc::FLOAT);
-    if (!aovs.alpha.empty()) add_channel("A", OIIO::TypeDesc::FLOAT);
-    if (!aovs.depth.empty()) add_channel("Z", OIIO::TypeDesc::FLOAT);
+    std::vector<detail::ExrChannel> channels;
+    for (int c = 0; c < 3; ++c) {
+        channels.push_back({std::string(1, "RGB"[c]), false, floats(image.pixels, 4 * static_cast<std::size_t>(c)),
+                            sizeof(glm::vec3)});
+    }
+    if (!aovs.alpha.empty()) channels.push_back({"A", false, floats(aovs.alpha, 0), sizeof(float)});
+    if (!aovs.depth.empty()) channels.push_back({"Z", false, floats(aovs.depth, 0), sizeof(float)});
     if (!aovs.normal.empty()) {
-        for (const char* name : {"N.X", "N.Y", "N.Z"}) add_channel(name, OIIO::TypeDesc::FLOAT);
+        for (int c = 0; c < 3; ++c) {
+            channels.push_back({std::string("N.") + "XYZ"[c], false, floats(aovs.normal, 4 * static_cast<std::size_t>(c)),
+                                sizeof(glm::vec3)});
+        }
     }
-    if (!aovs.id.empty()) add_channel("id", OIIO::TypeDesc::UINT);
     if (!aovs.uv.empty()) {
-        for (const char* name : {"uv.s", "uv.t"}) add_channel(name, OIIO::TypeDesc::FLOAT);
-    }
-    const std::size_t channels = names.size();
-    std::vector<std::uint32_t> words(image.pixels.size() * channels);  // raw 4-byte values, channel-interleaved
-    const auto bits = [](float value) {
-        std::uint32_t word;
-        std::memcpy(&word, &value, sizeof word);
-        return word;
-    };
-    for (std::size_t p = 0; p < image.pixels.size(); ++p) {
-        std::uint32_t* out = &words[p * channels];
-        for (int c = 0; c < 3; ++c) *out++ = bits(image.pixels[p][c]);
-        if (!aovs.alpha.empty()) *out++ = bits(aovs.alpha[p]);
-        if (!aovs.depth.empty()) *out++ = bits(aovs.depth[p]);
-        if (!aovs.normal.empty()) {
-            for (int c = 0; c < 3; ++c) *out++ = bits(aovs.normal[p][c]);
-        }
-        if (!aovs.id.empty()) *out++ = static_cast<std::uint32_t>(aovs.id[p]);
-        if (!aovs.uv.empty()) {
-            for (int c = 0; c < 2; ++c) *out++ = bits(aovs.uv[p][c]);
+        for (int c = 0; c < 2; ++c) {
+            channels.push_back({std::string("uv.") + "st"[c], false, floats(aovs.uv, 4 * static_cast<std::size_t>(c)),
+                                sizeof(glm::vec2)});
         }
     }
-
-    OIIO::ImageSpec spec(image.columns, image.rows, static_cast<int>(channels), OIIO::TypeDesc::FLOAT);
-    spec.channelnames = names;
-    spec.channelformats = formats;
-    spec.alpha_channel = aovs.alpha.empty() ? -1 : 3;
-    spec.z_channel = aovs.depth.empty() ? -1 : (aovs.alpha.empty() ? 3 : 4);
-    spec.attribute("compression", "zip");
+    // The triangle index as a 32-bit unsigned channel: the background's -1 becomes 4294967295.
+    std::vector<std::uint32_t> ids(aovs.id.size());
+    for (std::size_t p = 0; p < ids.size(); ++p) ids[p] = static_cast<std::uint32_t>(aovs.id[p]);
+    if (!aovs.id.empty()) channels.push_back({"id", true, floats(ids, 0), sizeof(std::uint32_t)});
     replace_file_atomically(path, [&](const std::string& temporary) {
-        auto output = OIIO::ImageOutput::create(temporary);
-        if (!output) throw FileError(path + ": cannot write: " + OIIO::geterror());
-        open_output(*output, temporary, path, spec);
-        // TypeUnknown: the buffer is in the file's own per-channel formats.
-        finish_output(*output, output->write_image(OIIO::TypeDesc::UNKNOWN, words.data()), path);
+        detail::write_exr(temporary, path, image.columns, image.rows, channels);
     });
 }
 
 void read_exr_with_aovs(const std::string& path, Image& image, AovPlanes& aovs) {
-    auto input = OIIO::ImageInput::open(path);
-    if (!input) throw FileError(path + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = input->spec();
-    const std::size_t pixels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
-    const auto channel = [&](const std::string& name) {
-        const auto found = std::find(spec.channelnames.begin(), spec.channelnames.end(), name);
-        return found == spec.channelnames.end() ? -1 : static_cast<int>(found - spec.channelnames.begin());
-    };
-    const auto read_float = [&](int index, std::vector<float>& values) {
-        values.resize(pixels);
-        if (!input->read_image(0, 0, index, index + 1, OIIO::TypeDesc::FLOAT, values.data())) {
-            throw FileError(path + ": cannot read channel " + spec.channelnames[index] + ": " + input->geterror());
-        }
-    };
-    image = Image(spec.height, spec.width);
+    detail::ExrReader reader(path);
+    image = Image(reader.rows(), reader.columns());
     aovs = AovPlanes{};
-    aovs.rows = spec.height;
-    aovs.columns = spec.width;
-    std::vector<float> values;
+    aovs.rows = reader.rows();
+    aovs.columns = reader.columns();
+    const std::size_t pixels = image.pixels.size();
+    const auto at = [](auto& plane, std::size_t offset) { return reinterpret_cast<char*>(plane.data()) + offset; };
+    std::vector<detail::ExrChannel> channels;
     for (int c = 0; c < 3; ++c) {
-        const int index = channel(std::string(1, "RGB"[c]));
-        if (index < 0) throw FileError(path + ": no channel " + std::string(1, "RGB"[c]));
-        read_float(index, values);
-        for (std::size_t p = 0; p < pixels; ++p) image.pixels[p][c] = values[p];
+        const std::string name(1, "RGB"[c]);
+        if (!reader.has(name)) throw FileError(path + ": no channel " + name);
+        channels.push_back({name, false, at(image.pixels, 4 * static_cast<std::size_t>(c)), sizeof(glm::vec3)});
     }
-    if (channel("A") >= 0) read_float(channel("A"), aovs.alpha);
-    if (channel("Z") >= 0) read_float(channel("Z"), aovs.depth);
-    if (channel("N.X") >= 0 && channel("N.Y") >= 0 && channel("N.Z") >= 0) {
+    if (reader.has("A")) {
+        aovs.alpha.resize(pixels);
+        channels.push_back({"A", false, at(aovs.alpha, 0), sizeof(float)});
+    }
+    if (reader.has("Z")) {
+        aovs.depth.resize(pixels);
+        channels.push_back({"Z", false, at(aovs.depth, 0), sizeof(float)});
+    }
+    if (reader.has("N.X") && reader.has("N.Y") && reader.has("N.Z")) {
         aovs.normal.resize(pixels);
         for (int c = 0; c < 3; ++c) {
-            read_float(channel(std::string("N.") + "XYZ"[c]), values);
-            for (std::size_t p = 0; p < pixels; ++p) aovs.normal[p][c] = values[p];
+            channels.push_back({std::string("N.") + "XYZ"[c], false, at(aovs.normal, 4 * static_cast<std::size_t>(c)),
+                                sizeof(glm::vec3)});
         }
     }
-    if (channel("id") >= 0) {
-        const int index = channel("id");
-        std::vector<std::uint32_t> ids(pixels);
-        if (!input->read_image(0, 0, index, index + 1, OIIO::TypeDesc::UINT, ids.data())) {
-            throw FileError(path + ": cannot read channel id: " + input->geterror());
-        }
-        aovs.id.resize(pixels);
-        for (std::size_t p = 0; p < pixels; ++p) aovs.id[p] = static_cast<std::int32_t>(ids[p]);
-    }
-    if (channel("uv.s") >= 0 && channel("uv.t") >= 0) {
+    if (reader.has("uv.s") && reader.has("uv.t")) {
         aovs.uv.resize(pixels);
         for (int c = 0; c < 2; ++c) {
-            read_float(channel(std::string("uv.") + "st"[c]), values);
-            for (std::size_t p = 0; p < pixels; ++p) aovs.uv[p][c] = values[p];
+            channels.push_back({std::string("uv.") + "st"[c], false, at(aovs.uv, 4 * static_cast<std::size_t>(c)),
+                                sizeof(glm::vec2)});
         }
+    }
+    std::vector<std::uint32_t> ids;
+    if (reader.has("id")) {
+        ids.resize(pixels);
+        channels.push_back({"id", true, at(ids, 0), sizeof(std::uint32_t)});
+    }
+    reader.read(channels);
+    if (!ids.empty()) {
+        aovs.id.resize(pixels);
+        for (std::size_t p = 0; p < pixels; ++p) aovs.id[p] = static_cast<std::int32_t>(ids[p]);
     }
 }
 
 void write_png_with_alpha(const Image& image, const std::vector<float>& alpha, const glm::vec3& background,
                           const std::string& path) {
+    write_png_with_alpha(image, alpha, background, path, ImageWriteOptions{});
+}
+
+void write_png_with_alpha(const Image& image, const std::vector<float>& alpha, const glm::vec3& background,
+                          const std::string& path, const ImageWriteOptions& options) {
     require_format(path, ImageFormat::png, "expected a file name ending in .png for a transparent background");
     if (image.rows < 1 || image.columns < 1) throw FileError(path + ": cannot write an empty image");
     if (alpha.size() != image.pixels.size()) {
@@ -175,15 +140,14 @@ void write_png_with_alpha(const Image& image, const std::vector<float>& alpha, c
         }
         bytes[4 * p + 3] = detail::to_8_bit(a);
     }
-    OIIO::ImageSpec spec(image.columns, image.rows, 4, OIIO::TypeDesc::UINT8);
-    spec.alpha_channel = 3;
-    // The colour is not premultiplied by alpha (PNG's convention); tell OpenImageIO so it does not divide again.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
+    // The colour is not premultiplied by alpha (PNG's convention).
+    detail::PngPixels pixels;
+    pixels.data = bytes.data();
+    pixels.columns = image.columns;
+    pixels.rows = image.rows;
+    pixels.channels = 4;
     replace_file_atomically(path, [&](const std::string& temporary) {
-        auto output = OIIO::ImageOutput::create(temporary);
-        if (!output) throw FileError(path + ": cannot write: " + OIIO::geterror());
-        open_output(*output, temporary, path, spec);
-        finish_output(*output, output->write_image(OIIO::TypeDesc::UINT8, bytes.data()), path);
+        detail::write_png(temporary, path, pixels, detail::png_settings(options.png_compression));
     });
 }
 

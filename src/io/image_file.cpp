@@ -1,18 +1,27 @@
+// write_image and read_image: PNG out through libdeflate (png_encoder.cpp),
+// EXR in and out through OpenEXR (exr_file.cpp), PNG and JPEG in through
+// libspng and libjpeg-turbo (image_decoders.hpp), anything else in through the
+// OpenImageIO module, loaded only then (openimageio_module.hpp).
 #include "phongrast/io/image_file.hpp"
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
+#include "exr_file.hpp"
+#include "file_bytes.hpp"
+#include "image_decoders.hpp"
+#include "openimageio_module.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/text_file.hpp"
 #include "png_bytes.hpp"
+#include "png_encoder.hpp"
 
 namespace phongrast::io {
 namespace {
@@ -24,32 +33,114 @@ std::string lower_case_extension(const std::string& path) {
     return extension;
 }
 
-
-void write_with_openimageio(const Image& image, const std::string& temporary,
-                            const std::string& path, ImageFormat format) {
-    auto output = OIIO::ImageOutput::create(temporary);
-    if (!output) throw FileError(path + ": cannot write: " + OIIO::geterror());
-    const bool png = format == ImageFormat::png;
-    OIIO::ImageSpec spec(image.columns, image.rows, 3, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
-    if (!png) spec.attribute("compression", "zip");
-    if (!output->open(temporary, spec)) {
-        throw FileError(path + ": cannot write: " + output->geterror());
-    }
-    bool written = false;
-    if (png) {
-        std::vector<std::uint8_t> bytes(image.pixels.size() * 3);
+void write_png_rgb(const Image& image, const std::string& temporary, const std::string& path,
+                   const ImageWriteOptions& options) {
+    detail::PngPixels pixels;
+    pixels.columns = image.columns;
+    pixels.rows = image.rows;
+    pixels.channels = 3;
+    pixels.bit_depth = options.png_bit_depth;
+    const std::size_t values = image.pixels.size() * 3;
+    const detail::PngSettings settings = detail::png_settings(options.png_compression);
+    if (options.png_bit_depth == 16) {
+        std::vector<std::uint16_t> words(values);
         for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-            for (int c = 0; c < 3; ++c) bytes[3 * i + static_cast<std::size_t>(c)] = detail::to_8_bit(image.pixels[i][c]);
+            for (int c = 0; c < 3; ++c) words[3 * i + static_cast<std::size_t>(c)] = detail::to_16_bit(image.pixels[i][c]);
         }
-        written = output->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-    } else {
-        written = output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
+        pixels.data = words.data();
+        detail::write_png(temporary, path, pixels, settings);
+        return;
     }
-    const bool closed = output->close();
-    if (!written || !closed) throw FileError(path + ": write failed: " + output->geterror());
+    std::vector<std::uint8_t> bytes(values);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) bytes[3 * i + static_cast<std::size_t>(c)] = detail::to_8_bit(image.pixels[i][c]);
+    }
+    pixels.data = bytes.data();
+    detail::write_png(temporary, path, pixels, settings);
+}
+
+void write_exr_rgb(const Image& image, const std::string& temporary, const std::string& path) {
+    // OpenEXR reads the values in place: three float channels, 12 bytes apart.
+    char* base = const_cast<char*>(reinterpret_cast<const char*>(image.pixels.data()));
+    const std::size_t stride = sizeof(glm::vec3);
+    detail::write_exr(temporary, path, image.columns, image.rows,
+                      {{"R", false, base, stride}, {"G", false, base + 4, stride}, {"B", false, base + 8, stride}});
+}
+
+bool looks_like_exr(const char* data, std::size_t size) {
+    return size >= 4 && static_cast<unsigned char>(data[0]) == 0x76 && static_cast<unsigned char>(data[1]) == 0x2f &&
+           static_cast<unsigned char>(data[2]) == 0x31 && static_cast<unsigned char>(data[3]) == 0x01;
+}
+
+Image read_exr_rgb(const std::string& path) {
+    detail::ExrReader reader(path);
+    Image image(reader.rows(), reader.columns());
+    // R, G, B when present; else luminance Y as grey; else the file's first
+    // channels (alphabetical), the last one repeated, as OpenImageIO read them.
+    std::vector<std::string> names;
+    if (reader.has("R") && reader.has("G") && reader.has("B")) {
+        names = {"R", "G", "B"};
+    } else if (reader.has("Y")) {
+        names = {"Y", "Y", "Y"};
+    } else {
+        const std::vector<std::string>& all = reader.channel_names();
+        if (all.empty()) throw FileError(path + ": image has no channels");
+        for (std::size_t c = 0; c < 3; ++c) names.push_back(all[std::min(c, all.size() - 1)]);
+    }
+    char* base = reinterpret_cast<char*>(image.pixels.data());
+    std::vector<detail::ExrChannel> channels;
+    for (std::size_t c = 0; c < 3; ++c) {
+        const auto first = std::find(names.begin(), names.end(), names[c]);
+        if (first != names.begin() + static_cast<std::ptrdiff_t>(c)) continue;  // a repeated channel is read once
+        channels.push_back({names[c], false, base + 4 * c, sizeof(glm::vec3)});
+    }
+    reader.read(channels);
+    for (glm::vec3& pixel : image.pixels) {
+        for (int c = 1; c < 3; ++c) {
+            const auto first = std::find(names.begin(), names.end(), names[static_cast<std::size_t>(c)]) - names.begin();
+            if (first != c) pixel[c] = pixel[static_cast<int>(first)];
+        }
+    }
+    return image;
+}
+
+Image read_with_openimageio(const std::string& path) {
+    const PhongrastOpenImageIoModule* module = nullptr;
+    try {
+        module = &detail::openimageio_module("reading this image format");
+    } catch (const std::runtime_error& error) {
+        throw FileError(path + ": " + error.what());
+    }
+    int rows = 0;
+    int columns = 0;
+    float* rgb = nullptr;
+    char error[1024] = "";
+    if (module->read_rgb(path.c_str(), &rows, &columns, &rgb, error, sizeof error) != 0) {
+        throw FileError(path + ": " + error);
+    }
+    std::unique_ptr<float, void (*)(float*)> owned(rgb, module->free_pixels);
+    Image image(rows, columns);
+    std::memcpy(image.pixels.data(), rgb, image.pixels.size() * sizeof(glm::vec3));
+    return image;
 }
 
 }  // namespace
+
+PngCompression parse_png_compression(std::string_view text) {
+    if (text == "fast") return PngCompression::fast;
+    if (text == "default") return PngCompression::standard;
+    if (text == "small") return PngCompression::small;
+    throw std::invalid_argument("png-compression: expected fast, default or small, got '" + std::string(text) + "'");
+}
+
+const char* to_string(PngCompression compression) {
+    switch (compression) {
+    case PngCompression::fast: return "fast";
+    case PngCompression::small: return "small";
+    case PngCompression::standard: break;
+    }
+    return "default";
+}
 
 ImageFormat image_format_for(const std::string& path) {
     const std::string extension = lower_case_extension(path);
@@ -59,32 +150,37 @@ ImageFormat image_format_for(const std::string& path) {
                     "'; expected a file name ending in .png (8-bit) or .exr (linear float)");
 }
 
-void write_image(const Image& image, const std::string& path) {
+void write_image(const Image& image, const std::string& path) { write_image(image, path, ImageWriteOptions{}); }
+
+void write_image(const Image& image, const std::string& path, const ImageWriteOptions& options) {
     const ImageFormat format = image_format_for(path);
     if (image.rows < 1 || image.columns < 1) throw FileError(path + ": cannot write an empty image");
+    if (options.png_bit_depth != 8 && options.png_bit_depth != 16) {
+        throw FileError(path + ": PNG bit depth " + std::to_string(options.png_bit_depth) + "; expected 8 or 16");
+    }
     replace_file_atomically(path, [&](const std::string& temporary) {
-        write_with_openimageio(image, temporary, path, format);
+        if (format == ImageFormat::png) {
+            write_png_rgb(image, temporary, path, options);
+        } else {
+            write_exr_rgb(image, temporary, path);
+        }
     });
 }
 
 Image read_image(const std::string& path) {
-    auto input = OIIO::ImageInput::open(path);
-    if (!input) throw FileError(path + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = input->spec();
-    if (spec.nchannels < 1) throw FileError(path + ": image has no channels");
-    std::vector<float> values(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
-                              static_cast<std::size_t>(spec.nchannels));
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, values.data())) {
-        throw FileError(path + ": cannot read image: " + input->geterror());
-    }
-    Image image(spec.height, spec.width);
-    const std::size_t channels = static_cast<std::size_t>(spec.nchannels);
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        for (std::size_t c = 0; c < 3; ++c) {
-            image.pixels[i][static_cast<int>(c)] = values[i * channels + std::min(c, channels - 1)];
+    bool exr = false;
+    {
+        // Chosen by the file's first bytes, not its name; the mapping ends before EXR or OpenImageIO reopen the file.
+        const FileBytes bytes = FileBytes::read(path, "image");
+        if (detail::looks_like_png(bytes.data(), bytes.size())) return detail::decode_png(bytes.data(), bytes.size(), path);
+        if (detail::looks_like_jpeg(bytes.data(), bytes.size())) {
+            bool unsupported = false;  // CMYK: left to OpenImageIO
+            Image image = detail::decode_jpeg(bytes.data(), bytes.size(), path, unsupported);
+            if (!unsupported) return image;
         }
+        exr = looks_like_exr(bytes.data(), bytes.size());
     }
-    return image;
+    return exr ? read_exr_rgb(path) : read_with_openimageio(path);
 }
 
 }  // namespace phongrast::io

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include "openimageio_module.hpp"
 
 namespace phongrast::io {
 namespace {
@@ -33,35 +33,32 @@ Image compose_sheet(const std::vector<SheetCell>& cells, int columns) {
     const int sheet_columns = gap + grid_columns * (cell_columns + gap);
     const int sheet_rows = gap + grid_rows * (label_height + cell_rows + gap);
 
-    OIIO::ImageBuf sheet(OIIO::ImageSpec(sheet_columns, sheet_rows, 3, OIIO::TypeDesc::FLOAT));
-    const float white[3] = {1.0f, 1.0f, 1.0f};
-    OIIO::ImageBufAlgo::fill(sheet, white);
+    // White, then each cell copied below its label strip and its label drawn
+    // by OpenImageIO (loaded now: the text needs its font rendering).
+    Image sheet(sheet_rows, sheet_columns, glm::vec3(1.0f));
+    const bool any_label =
+        std::any_of(cells.begin(), cells.end(), [](const SheetCell& cell) { return !cell.label.empty(); });
+    const PhongrastOpenImageIoModule* module =
+        any_label ? &detail::openimageio_module("drawing the sheet's labels") : nullptr;
     const float black[3] = {0.0f, 0.0f, 0.0f};
-
     for (std::size_t i = 0; i < cells.size(); ++i) {
         const int grid_x = static_cast<int>(i) % grid_columns;
         const int grid_y = static_cast<int>(i) / grid_columns;
         const int left = gap + grid_x * (cell_columns + gap);
         const int top = gap + grid_y * (label_height + cell_rows + gap);
-        const OIIO::ImageSpec cell_spec(cell_columns, cell_rows, 3, OIIO::TypeDesc::FLOAT);
-        // ImageBuf wraps the pixels without copying; glm::vec3 is three packed floats.
-        OIIO::ImageBuf cell(cell_spec, const_cast<glm::vec3*>(cells[i].image.pixels.data()));
-        if (!OIIO::ImageBufAlgo::paste(sheet, left, top + label_height, 0, 0, cell)) {
-            throw std::runtime_error("compose_sheet: " + sheet.geterror());
+        for (int row = 0; row < cell_rows; ++row) {
+            const glm::vec3* from = &cells[i].image.at(row, 0);
+            std::copy(from, from + cell_columns, &sheet.at(top + label_height + row, left));
         }
-        if (!cells[i].label.empty() &&
-            !OIIO::ImageBufAlgo::render_text(sheet, left + 2, top + font_size + 2, cells[i].label, font_size,
-                                             label_font, black)) {
+        if (cells[i].label.empty()) continue;
+        char error[1024] = "";
+        if (module->draw_text(&sheet.pixels[0].x, sheet_rows, sheet_columns, left + 2, top + font_size + 2,
+                              cells[i].label.c_str(), font_size, label_font, black, error, sizeof error) != 0) {
             throw std::runtime_error("compose_sheet: cannot draw the label '" + cells[i].label + "' with font " +
-                                     label_font + " (Debian package fonts-dejavu-core): " + sheet.geterror());
+                                     label_font + " (Debian package fonts-dejavu-core): " + error);
         }
     }
-
-    Image result(sheet_rows, sheet_columns);
-    if (!sheet.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, result.pixels.data())) {
-        throw std::runtime_error("compose_sheet: " + sheet.geterror());
-    }
-    return result;
+    return sheet;
 }
 
 }  // namespace phongrast::io

@@ -10,6 +10,7 @@
 
 #include "phongrast/aov.hpp"
 #include "phongrast/image.hpp"
+#include "phongrast/io/image_file.hpp"
 
 namespace phongrast::io {
 
@@ -33,6 +34,9 @@ void read_exr_with_aovs(const std::string& path, Image& image, AovPlanes& aovs);
 /// plane of the wrong size).
 void write_png_with_alpha(const Image& image, const std::vector<float>& alpha, const glm::vec3& background,
                           const std::string& path);
+/// The same with a choice of PNG compression (options.png_bit_depth is not used: always 8-bit).
+void write_png_with_alpha(const Image& image, const std::vector<float>& alpha, const glm::vec3& background,
+                          const std::string& path, const ImageWriteOptions& options);
 
 }  // namespace phongrast::io
 

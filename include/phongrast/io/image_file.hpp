@@ -1,11 +1,16 @@
-// Images out (and back in, for tests and tools) through OpenImageIO.
-// PNG: 8 bits per channel, values clamped to [0,1] and written as they are
-// (no gamma curve). EXR: linear 32-bit float, not clamped. The format comes
-// from the file extension; anything else is an error raised before rendering.
+// Images out and in. The common formats go through their own libraries
+// (PNG: libdeflate out, libspng in; EXR: OpenEXR; JPEG in: libjpeg-turbo);
+// any other image read_image meets is read by OpenImageIO, which is loaded
+// only then (docs/startup.md says why and how it is found).
+// PNG: 8 bits per channel (16 on request), values clamped to [0,1] and
+// written as they are (no gamma curve). EXR: linear 32-bit float, not
+// clamped. The format comes from the file extension; anything else is an
+// error raised before rendering.
 #ifndef PHONGRAST_IO_IMAGE_FILE_HPP
 #define PHONGRAST_IO_IMAGE_FILE_HPP
 
 #include <string>
+#include <string_view>
 
 #include "phongrast/image.hpp"
 
@@ -17,13 +22,33 @@ enum class ImageFormat { png, exr };
 /// Throws FileError naming the path and the supported extensions otherwise.
 ImageFormat image_format_for(const std::string& path);
 
+/// How hard PNG files are compressed (--png-compression): the pixels are the
+/// same whichever is chosen, only the file size and the time change.
+enum class PngCompression {
+    fast,      ///< "fast": about 1.2x the default's size, fastest
+    standard,  ///< "default": the size OpenImageIO's encoder gave, several times faster
+    small,     ///< "small": smallest files, slowest
+};
+/// "fast", "default" or "small"; throws std::invalid_argument otherwise.
+PngCompression parse_png_compression(std::string_view text);
+const char* to_string(PngCompression compression);
+
+struct ImageWriteOptions {
+    PngCompression png_compression = PngCompression::standard;
+    int png_bit_depth = 8;  ///< 8 or 16 (values rounded to k/255 or k/65535)
+};
+
 /// Writes to a temporary file in the destination folder, then renames it over
 /// `path`, so a failure never leaves a truncated image or destroys an old one.
 /// Throws FileError.
 void write_image(const Image& image, const std::string& path);
+void write_image(const Image& image, const std::string& path, const ImageWriteOptions& options);
 
-/// Reads any image OpenImageIO understands into float RGB (PNG values become
-/// value / 255). Throws FileError.
+/// Reads an image into float RGB: an 8-bit value k becomes k/255 and a 16-bit
+/// one k/65535 (correctly rounded to float), float as stored; grey gives equal
+/// r, g, b; alpha is dropped. PNG, JPEG and EXR are read by their own
+/// libraries, any other format OpenImageIO understands through OpenImageIO.
+/// Throws FileError.
 Image read_image(const std::string& path);
 
 }  // namespace phongrast::io

@@ -1,5 +1,6 @@
 // A labelled grid of images (the seed's eight figures on one sheet), with the
-// labels drawn by OpenImageIO in the DejaVuSans font (fonts-dejavu-core).
+// labels drawn by OpenImageIO in the DejaVuSans font (fonts-dejavu-core);
+// OpenImageIO is loaded (dlopen) on the first sheet with labels, not at start-up.
 #ifndef PHONGRAST_IO_SHEET_HPP
 #define PHONGRAST_IO_SHEET_HPP
 

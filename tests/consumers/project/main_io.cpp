@@ -1,6 +1,6 @@
 // The installed phongrast::io in use: render the triangle, write it as EXR (linear
 // floats, so nothing is rounded), read it back and check the same pixels. This
-// links OpenImageIO through phongrast::io's exported link-only dependencies.
+// links OpenEXR through phongrast::io's exported link-only dependencies.
 #include <cstdio>
 #include <exception>
 

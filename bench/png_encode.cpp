@@ -1,0 +1,172 @@
+// PNG encoding and decoding speed and size: phongrast's encoder (libdeflate,
+// one fixed filter; src/io/png_encoder.cpp) at each --png-compression and a
+// survey of levels and filters, against OpenImageIO's PNG writer (libpng with
+// zlib level 6 and every filter tried on every row: what phongrast used
+// before), and libspng's decoding against OpenImageIO's. Interleaved rounds,
+// medians; bench/run_startup.sh runs it and docs/startup.md quotes it.
+//
+//   bench_png_encode [--rounds N] [--survey] IMAGE.png...
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include "image_decoders.hpp"
+#include "phongrast/io/image_file.hpp"
+#include "png_bytes.hpp"
+#include "png_encoder.hpp"
+
+using namespace phongrast;
+namespace detail = phongrast::io::detail;
+
+namespace {
+
+double seconds_of(const std::function<void()>& work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+long file_size(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) return -1;
+    std::fseek(file, 0, SEEK_END);
+    const long size = std::ftell(file);
+    std::fclose(file);
+    return size;
+}
+
+/// OpenImageIO's PNG writer with its defaults, as phongrast's write_image called it before.
+void write_with_openimageio(const std::string& path, const detail::PngPixels& pixels) {
+    auto output = OIIO::ImageOutput::create(path);
+    const OIIO::TypeDesc type = pixels.bit_depth == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8;
+    OIIO::ImageSpec spec(pixels.columns, pixels.rows, pixels.channels, type);
+    if (pixels.channels == 4) {
+        spec.alpha_channel = 3;
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+    }
+    if (!output || !output->open(path, spec) || !output->write_image(type, pixels.data) || !output->close()) {
+        throw std::runtime_error(path + ": OpenImageIO could not write");
+    }
+}
+
+struct Case {
+    std::string name;
+    std::function<void(const std::string& path)> write;
+    std::vector<double> times;
+    long size = 0;
+};
+
+struct Variant {
+    std::string name;
+    detail::PngPixels pixels;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int rounds = 9;
+    bool survey = false;
+    std::vector<std::string> inputs;
+    for (int i = 1; i < argc; ++i) {
+        const std::string argument = argv[i];
+        if (argument == "--rounds" && i + 1 < argc) {
+            rounds = std::stoi(argv[++i]);
+        } else if (argument == "--survey") {
+            survey = true;
+        } else {
+            inputs.push_back(argument);
+        }
+    }
+    const std::string scratch = "/tmp/phongrast-bench-png-" + std::to_string(::getpid());
+    std::printf("| image | encoder | median ms | size bytes | time / OpenImageIO | size / OpenImageIO |\n|---|---|---|---|---|---|\n");
+    for (const std::string& input : inputs) {
+        const Image image = io::read_image(input);
+        const std::size_t count = image.pixels.size();
+        std::vector<std::uint8_t> rgb(count * 3), rgba(count * 4);
+        std::vector<std::uint16_t> rgb16(count * 3);
+        for (std::size_t p = 0; p < count; ++p) {
+            bool background = true;
+            for (int c = 0; c < 3; ++c) {
+                rgb[3 * p + c] = rgba[4 * p + c] = detail::to_8_bit(image.pixels[p][c]);
+                rgb16[3 * p + c] = detail::to_16_bit(image.pixels[p][c]);
+                background = background && rgb[3 * p + c] == 255;
+            }
+            rgba[4 * p + 3] = background ? 0 : 255;  // a transparent background, as --transparent writes
+        }
+        std::vector<Variant> variants = {{"RGB 8-bit", {rgb.data(), image.columns, image.rows, 3, 8}}};
+        if (!survey) {
+            variants.push_back({"RGBA 8-bit", {rgba.data(), image.columns, image.rows, 4, 8}});
+            variants.push_back({"RGB 16-bit", {rgb16.data(), image.columns, image.rows, 3, 16}});
+        }
+        for (const Variant& variant : variants) {
+            std::vector<Case> cases;
+            cases.push_back({"OpenImageIO (before)", [&](const std::string& path) { write_with_openimageio(path, variant.pixels); }, {}, 0});
+            const auto add = [&](const std::string& name, detail::PngSettings settings) {
+                cases.push_back({name, [=](const std::string& path) { detail::write_png(path, path, variant.pixels, settings); }, {}, 0});
+            };
+            if (survey) {
+                const char* filter_names[] = {"none", "sub", "up", "average", "paeth"};
+                for (int filter = 0; filter < 5; ++filter) {
+                    for (int level : {1, 2, 3, 4, 5, 6, 9, 12}) {
+                        add("libdeflate " + std::to_string(level) + ", " + filter_names[filter],
+                            {level, static_cast<detail::PngFilter>(filter)});
+                    }
+                }
+            } else {
+                for (io::PngCompression choice : {io::PngCompression::fast, io::PngCompression::standard, io::PngCompression::small}) {
+                    add(std::string("phongrast --png-compression ") + io::to_string(choice), detail::png_settings(choice));
+                }
+            }
+            for (int round = 0; round < rounds + 1; ++round) {
+                for (std::size_t c = 0; c < cases.size(); ++c) {
+                    const std::string path = scratch + "-" + std::to_string(c) + ".png";
+                    const double t = seconds_of([&] { cases[c].write(path); });
+                    if (round > 0) cases[c].times.push_back(t);  // round 0 warms up
+                    cases[c].size = file_size(path);
+                    std::remove(path.c_str());
+                }
+            }
+            const double base_time = median(cases[0].times);
+            const double base_size = static_cast<double>(cases[0].size);
+            for (const Case& c : cases) {
+                std::printf("| %s %dx%d %s | %s | %.2f | %ld | %.3f | %.3f |\n", input.substr(input.find_last_of('/') + 1).c_str(),
+                            image.columns, image.rows, variant.name.c_str(), c.name.c_str(), 1e3 * median(c.times), c.size,
+                            median(c.times) / base_time, static_cast<double>(c.size) / base_size);
+            }
+        }
+        if (!survey) {
+            // Reading the file back: libspng (read_image) against OpenImageIO.
+            std::vector<double> ours, theirs;
+            for (int round = 0; round < rounds + 1; ++round) {
+                const double a = seconds_of([&] { (void)io::read_image(input); });
+                const double b = seconds_of([&] {
+                    auto in = OIIO::ImageInput::open(input);
+                    std::vector<float> values(count * static_cast<std::size_t>(in->spec().nchannels));
+                    in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, values.data());
+                });
+                if (round > 0) {
+                    ours.push_back(a);
+                    theirs.push_back(b);
+                }
+            }
+            std::printf("| %s | read to float RGB: OpenImageIO | %.2f | | 1.000 | |\n", input.c_str(), 1e3 * median(theirs));
+            std::printf("| %s | read to float RGB: libspng (read_image) | %.2f | | %.3f | |\n", input.c_str(),
+                        1e3 * median(ours), median(ours) / median(theirs));
+        }
+    }
+    return 0;
+}

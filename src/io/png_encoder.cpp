@@ -1,0 +1,232 @@
+#include "png_encoder.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <vector>
+
+#include <libdeflate.h>
+
+#include "phongrast/io/error.hpp"
+
+namespace phongrast::io::detail {
+namespace {
+
+constexpr std::size_t kLargestChunk = std::size_t{1} << 30;  // PNG allows 2^31 - 1 bytes per chunk
+
+void put_u32(std::string& out, std::uint32_t value) {
+    const char bytes[4] = {static_cast<char>(value >> 24), static_cast<char>(value >> 16),
+                           static_cast<char>(value >> 8), static_cast<char>(value)};
+    out.append(bytes, 4);
+}
+
+void put_chunk(std::string& out, const char type[4], const unsigned char* data, std::size_t size) {
+    put_u32(out, static_cast<std::uint32_t>(size));
+    const std::size_t start = out.size();
+    out.append(type, 4);
+    if (size > 0) out.append(reinterpret_cast<const char*>(data), size);
+    const std::uint32_t crc = libdeflate_crc32(0, out.data() + start, size + 4);
+    put_u32(out, crc);
+}
+
+std::uint8_t paeth(std::uint8_t a, std::uint8_t b, std::uint8_t c) {
+    const int p = int{a} + int{b} - int{c};
+    const int pa = std::abs(p - int{a});
+    const int pb = std::abs(p - int{b});
+    const int pc = std::abs(p - int{c});
+    if (pa <= pb && pa <= pc) return a;
+    return pb <= pc ? b : c;
+}
+
+/// One row filtered into `out` (its first byte the filter type). `previous`
+/// is the row above, unfiltered, or null for the first row (PNG's zeros).
+void filter_row(PngFilter filter, const std::uint8_t* row, const std::uint8_t* previous, std::size_t size,
+                std::size_t bpp, std::uint8_t* out) {
+    *out++ = static_cast<std::uint8_t>(filter);
+    switch (filter) {
+    case PngFilter::none:
+        std::memcpy(out, row, size);
+        return;
+    case PngFilter::sub:
+        for (std::size_t i = 0; i < std::min(bpp, size); ++i) out[i] = row[i];
+        for (std::size_t i = bpp; i < size; ++i) out[i] = static_cast<std::uint8_t>(row[i] - row[i - bpp]);
+        return;
+    case PngFilter::up:
+        if (!previous) {
+            std::memcpy(out, row, size);
+            return;
+        }
+        for (std::size_t i = 0; i < size; ++i) out[i] = static_cast<std::uint8_t>(row[i] - previous[i]);
+        return;
+    case PngFilter::average:
+        for (std::size_t i = 0; i < size; ++i) {
+            const int left = i >= bpp ? row[i - bpp] : 0;
+            const int up = previous ? previous[i] : 0;
+            out[i] = static_cast<std::uint8_t>(row[i] - ((left + up) >> 1));
+        }
+        return;
+    case PngFilter::paeth:
+        for (std::size_t i = 0; i < size; ++i) {
+            const std::uint8_t left = i >= bpp ? row[i - bpp] : 0;
+            const std::uint8_t up = previous ? previous[i] : 0;
+            const std::uint8_t corner = previous && i >= bpp ? previous[i - bpp] : 0;
+            out[i] = static_cast<std::uint8_t>(row[i] - paeth(left, up, corner));
+        }
+        return;
+    }
+}
+
+struct CompressorDeleter {
+    void operator()(libdeflate_compressor* compressor) const { libdeflate_free_compressor(compressor); }
+};
+
+/// libdeflate's compressor for `level`, kept per thread (a level-12 one
+/// allocates about 1 MB; a batch's writer thread reuses it image after image).
+libdeflate_compressor& compressor_for(int level) {
+    thread_local std::array<std::unique_ptr<libdeflate_compressor, CompressorDeleter>, 13> compressors;
+    auto& slot = compressors.at(static_cast<std::size_t>(level));
+    if (!slot) {
+        slot.reset(libdeflate_alloc_compressor(level));
+        if (!slot) throw std::bad_alloc();
+    }
+    return *slot;
+}
+
+}  // namespace
+
+PngSettings png_settings(PngCompression compression) {
+    // Chosen with bench/png_encode.cpp on rendered images (docs/startup.md):
+    // `up` is the best single filter on renders (flat backgrounds, smooth
+    // shading) and costs one subtraction a byte.
+    switch (compression) {
+    case PngCompression::fast: return {1, PngFilter::up};
+    case PngCompression::small: return {9, PngFilter::up};
+    case PngCompression::standard: break;
+    }
+    return {4, PngFilter::up};
+}
+
+namespace {
+
+/// The zlib stream of the filtered rows, in a buffer kept per thread: a batch
+/// writes image after image, and fresh megabyte buffers cost more in page
+/// faults and zero-filling than the encoding itself. Returns its size.
+std::size_t compress_rows(const PngPixels& pixels, PngSettings settings, std::vector<std::uint8_t>*& out) {
+    if (pixels.columns < 1 || pixels.rows < 1) throw std::invalid_argument("PNG: the image is empty");
+    if (pixels.channels < 1 || pixels.channels > 4) throw std::invalid_argument("PNG: 1 to 4 channels");
+    if (pixels.bit_depth != 8 && pixels.bit_depth != 16) throw std::invalid_argument("PNG: 8 or 16 bits");
+    if (settings.level < 0 || settings.level > 12) throw std::invalid_argument("PNG: deflate level 0 to 12");
+    const std::size_t bytes_per_value = static_cast<std::size_t>(pixels.bit_depth / 8);
+    const std::size_t bpp = static_cast<std::size_t>(pixels.channels) * bytes_per_value;
+    const std::size_t row_size = static_cast<std::size_t>(pixels.columns) * bpp;
+    const std::size_t rows = static_cast<std::size_t>(pixels.rows);
+
+    // The rows as PNG stores them (16-bit values big-endian), each filtered behind its type byte.
+    thread_local std::vector<std::uint8_t> filtered;
+    thread_local std::vector<std::uint8_t> compressed;
+    thread_local std::vector<std::uint8_t> swapped[2];
+    filtered.resize((row_size + 1) * rows);
+    const std::uint8_t* previous = nullptr;
+    for (std::size_t y = 0; y < rows; ++y) {
+        const std::uint8_t* row = static_cast<const std::uint8_t*>(pixels.data) + y * row_size;
+        if (bytes_per_value == 2) {
+            std::vector<std::uint8_t>& big_endian = swapped[y % 2];
+            big_endian.resize(row_size);
+            const std::uint16_t* values = reinterpret_cast<const std::uint16_t*>(row);
+            for (std::size_t i = 0; i < row_size / 2; ++i) {
+                big_endian[2 * i] = static_cast<std::uint8_t>(values[i] >> 8);
+                big_endian[2 * i + 1] = static_cast<std::uint8_t>(values[i]);
+            }
+            row = big_endian.data();
+        }
+        filter_row(settings.filter, row, previous, row_size, bpp, &filtered[y * (row_size + 1)]);
+        previous = row;
+    }
+
+    libdeflate_compressor& compressor = compressor_for(settings.level);
+    compressed.resize(libdeflate_zlib_compress_bound(&compressor, filtered.size()));
+    const std::size_t compressed_size =
+        libdeflate_zlib_compress(&compressor, filtered.data(), filtered.size(), compressed.data(), compressed.size());
+    if (compressed_size == 0) throw std::runtime_error("PNG: deflate failed");
+    out = &compressed;
+    return compressed_size;
+}
+
+/// Everything before the image data: the signature and the IHDR chunk.
+std::string png_header(const PngPixels& pixels) {
+    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const std::uint8_t colour_types[5] = {0, 0, 4, 2, 6};  // by channel count: grey, grey+alpha, RGB, RGBA
+    std::string out(reinterpret_cast<const char*>(signature), 8);
+    unsigned char header[13] = {};
+    for (int i = 0; i < 4; ++i) {
+        header[i] = static_cast<unsigned char>(static_cast<std::uint32_t>(pixels.columns) >> (24 - 8 * i));
+        header[4 + i] = static_cast<unsigned char>(static_cast<std::uint32_t>(pixels.rows) >> (24 - 8 * i));
+    }
+    header[8] = static_cast<unsigned char>(pixels.bit_depth);
+    header[9] = colour_types[pixels.channels];
+    // header[10..12]: deflate compression, adaptive filtering (method 0), no interlace.
+    put_chunk(out, "IHDR", header, sizeof header);
+    return out;
+}
+
+}  // namespace
+
+std::string encode_png(const PngPixels& pixels, PngSettings settings) {
+    std::vector<std::uint8_t>* compressed = nullptr;
+    const std::size_t compressed_size = compress_rows(pixels, settings, compressed);
+    std::string out = png_header(pixels);
+    out.reserve(out.size() + compressed_size + 24 + 12 * (compressed_size / kLargestChunk));
+    for (std::size_t at = 0; at < compressed_size; at += kLargestChunk) {
+        put_chunk(out, "IDAT", compressed->data() + at, std::min(kLargestChunk, compressed_size - at));
+    }
+    put_chunk(out, "IEND", nullptr, 0);
+    return out;
+}
+
+void write_png(const std::string& file, const std::string& path, const PngPixels& pixels, PngSettings settings) {
+    std::vector<std::uint8_t>* compressed = nullptr;
+    const std::size_t compressed_size = compress_rows(pixels, settings, compressed);
+    std::FILE* out = std::fopen(file.c_str(), "wb");
+    if (!out) throw FileError(path + ": cannot write: " + std::strerror(errno));
+    // The image data goes from the compressor's buffer to the file without a copy; only chunk framing is built.
+    bool written = true;
+    const auto put = [&](const void* data, std::size_t size) {
+        written = written && (size == 0 || std::fwrite(data, 1, size, out) == size);
+    };
+    const std::string header = png_header(pixels);
+    put(header.data(), header.size());
+    for (std::size_t at = 0; at < compressed_size; at += kLargestChunk) {
+        const std::size_t size = std::min(kLargestChunk, compressed_size - at);
+        std::string frame;
+        put_u32(frame, static_cast<std::uint32_t>(size));
+        frame += "IDAT";
+        std::uint32_t crc = libdeflate_crc32(0, "IDAT", 4);
+        crc = libdeflate_crc32(crc, compressed->data() + at, size);
+        put(frame.data(), frame.size());
+        put(compressed->data() + at, size);
+        frame.clear();
+        put_u32(frame, crc);
+        put(frame.data(), frame.size());
+    }
+    std::string end;
+    put_chunk(end, "IEND", nullptr, 0);
+    put(end.data(), end.size());
+    const int write_errno = errno;
+    const bool closed = std::fclose(out) == 0;
+    if (!written || !closed) throw FileError(path + ": write failed: " + std::strerror(written ? errno : write_errno));
+}
+
+std::uint16_t to_16_bit(float value) {
+    if (!(value > 0.0f)) return 0;
+    if (value >= 1.0f) return 65535;
+    return static_cast<std::uint16_t>(std::lround(value * 65535.0f));
+}
+
+}  // namespace phongrast::io::detail
