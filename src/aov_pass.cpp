@@ -64,7 +64,9 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
                 }
                 out.depth[index] = static_cast<float>(surface_depth);
             }
-            if (planes.id) out.id[index] = static_cast<std::int32_t>(source);
+            if (planes.id) {
+                out.id[index] = static_cast<std::int32_t>(in.original_triangle ? in.original_triangle[source] : source);
+            }
             if (planes.normal) {
                 out.normal[index] =
                     in.shader == Shader::flat

@@ -43,6 +43,9 @@ struct AovPassInput {
     const std::vector<Triangle>* triangles = nullptr;
     const std::vector<Varyings<Real>>* vertices = nullptr;  ///< camera-space varyings, by mesh vertex
     const CameraFrame* frame = nullptr;
+    /// The caller's index of each triangle of a reordered mesh (mesh_order.hpp), which the id output
+    /// gives; null when the mesh is rendered in the caller's order.
+    const std::uint32_t* original_triangle = nullptr;
 };
 
 /// Fills `out` (already reset) for every band, in parallel over bands.

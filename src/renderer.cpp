@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "aov_pass.hpp"
+#include "mesh_order.hpp"
 #include "phongrast/render.hpp"
 #include "pipeline.hpp"
 #include "progress_monitor.hpp"
@@ -28,6 +29,7 @@ struct RendererState final : PassRenderer {
     FrameMemory<float> single;
     FrameMemory<double> twice;
     AovSamples aov_samples;  ///< one pass's extra outputs per sample, before their resolve into result.aovs
+    MeshOrder mesh_order;    ///< mesh order hook: a large mesh's cache-friendly copy and its permutation
     // During render():
     const Scene* scene = nullptr;          ///< the scene being rendered
     ProgressMonitor* progress = nullptr;   ///< its progress reports
@@ -46,7 +48,8 @@ struct RendererState final : PassRenderer {
 
     void render_pass(int rows, int columns, glm::dvec2 sample_offset, RenderStats& stats, Image& image) override {
         progress->set_pass(passes_done++, passes);
-        const PassOutput out{image, aov_planes, aov_samples};
+        const PassOutput out{image, aov_planes, aov_samples,
+                             mesh_order.triangle_source.empty() ? nullptr : mesh_order.triangle_source.data()};
         if (options.precision == Precision::double_float) {
             detail::render_pass(*scene, options, rows, columns, sample_offset, twice, stats, out, *progress);
         } else {
@@ -61,7 +64,9 @@ struct RendererState final : PassRenderer {
         validate_render_request(rendered, options);
         ProgressMonitor monitor(options.progress);
         const int factor = options.samples_per_axis;
-        scene = &rendered;
+        // Mesh order hook: from here on the pipeline sees the mesh in a cache-friendly order.
+        const Scene& drawn = scene_in_render_order(rendered, options, mesh_order);
+        scene = &drawn;
         progress = &monitor;
         aov_planes = options.aovs.any() ? sample_planes_for(options.aovs, factor) : AovRequest{};
         passes = factor > 1 && options.sample_pattern == SamplePattern::rotated_grid ? factor * factor : 1;
@@ -69,7 +74,7 @@ struct RendererState final : PassRenderer {
         reset_aov_planes(rendered.image.rows, rendered.image.columns, aov_planes, result.aovs);
         result.stats = RenderStats{};
         result.stats.triangles_in = rendered.mesh.triangles.size();
-        arena_for(options.threads).execute([&] { render_and_resolve(rendered, options, *this, resolve_images, result); });
+        arena_for(options.threads).execute([&] { render_and_resolve(drawn, options, *this, resolve_images, result); });
         scene = nullptr;
         progress = nullptr;
         if (aov_planes.any()) finish_aovs(options.aovs, factor * factor, result.aovs);

@@ -1,0 +1,181 @@
+#include "mesh_order.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <limits>
+
+#include <meshoptimizer.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "scene_analysis.hpp"
+
+namespace phongrast::detail {
+namespace {
+
+/// Elements gathered by one task.
+constexpr std::size_t kGatherBlock = 16384;
+
+/// out[i] = in[source[i]] for every i, in parallel; `out` resized (its memory reused).
+template <typename T>
+void gather(const std::vector<T>& in, const std::vector<std::uint32_t>& source, std::vector<T>& out) {
+    if (in.empty()) {
+        out.clear();
+        return;
+    }
+    out.resize(source.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, source.size(), kGatherBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) out[i] = in[source[i]];
+    });
+}
+
+/// Per-corner index triples (texture coordinates, file normals) follow
+/// their triangles; the values they index stay where they are.
+void gather_corner_indices(const std::vector<Triangle>& in, const std::vector<std::uint32_t>& source,
+                           std::vector<Triangle>& out) {
+    gather(in, source, out);
+}
+
+/// A float the spatial sort can quantise: finite, clamped to float's range.
+float sortable(double value) {
+    constexpr double kLimit = 1e30;
+    return static_cast<float>(std::clamp(value, -kLimit, kLimit));
+}
+
+/// A few triangles of the mesh, hashed: with the arrays' addresses and
+/// sizes, what tells one mesh from another for reusing a permutation.
+std::uint64_t sample_triangles(const std::vector<Triangle>& triangles) {
+    constexpr std::size_t kSamples = 1024;
+    std::uint64_t hash = 0x9e3779b97f4a7c15ull;
+    const std::size_t step = std::max<std::size_t>(1, triangles.size() / kSamples);
+    for (std::size_t t = 0; t < triangles.size(); t += step) {
+        for (std::uint32_t index : triangles[t]) {
+            hash ^= index + 0x9e3779b97f4a7c15ull + (hash << 6) + (hash >> 2);
+        }
+    }
+    return hash;
+}
+
+bool same_mesh_as_before(const Mesh& mesh, const MeshOrder& order) {
+    return order.triangle_source.size() == mesh.triangles.size() &&
+           order.vertex_target.size() == mesh.positions.size() && order.positions_data == mesh.positions.data() &&
+           order.triangles_data == mesh.triangles.data() && order.triangles_sample == sample_triangles(mesh.triangles);
+}
+
+/// Every field of the scene but its mesh (and objects, empty when reordering).
+void copy_all_but_mesh(const Scene& from, Scene& to) {
+    // A field added to Scene must be copied here (and the size below updated; x86-64).
+    static_assert(sizeof(void*) != 8 || sizeof(Scene) == 528, "copy_all_but_mesh() copies every field of Scene");
+    to.camera = from.camera;
+    to.image = from.image;
+    to.material = from.material;
+    to.material_fields = from.material_fields;
+    to.normals = from.normals;
+    to.ambient = from.ambient;
+    to.lights = from.lights;
+    to.shader = from.shader;
+    to.lighting = from.lighting;
+}
+
+/// The normals the pipeline would compute from the caller's mesh, when it
+/// would compute any: summed in the caller's triangle order, so the same bits.
+bool needs_computed_normals(const Scene& scene, const RenderOptions& options) {
+    if (!scene.mesh.normals.empty()) return false;
+    return find_effects(scene).normals || !options.specialize_effects || options.aovs.normal;
+}
+
+std::atomic<std::size_t> g_reorder_min_triangles{kReorderMinTriangles};
+
+}  // namespace
+
+std::size_t set_reorder_min_triangles(std::size_t triangles) { return g_reorder_min_triangles.exchange(triangles); }
+std::size_t reorder_min_triangles() { return g_reorder_min_triangles.load(); }
+
+bool should_reorder(const Scene& scene, const RenderOptions& options) {
+    return scene.objects.empty() && scene.mesh.triangles.size() >= reorder_min_triangles() &&
+           options.back_faces == BackFaces::draw;
+}
+
+void compute_mesh_order(const Mesh& mesh, MeshOrder& order) {
+    const std::size_t triangles = mesh.triangles.size(), vertices = mesh.positions.size();
+    // Triangles in Morton order of their centroids.
+    std::vector<float> centroids(3 * triangles);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, kGatherBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+            const Triangle& tri = mesh.triangles[t];
+            const glm::dvec3 c = (mesh.positions[tri[0]] + mesh.positions[tri[1]] + mesh.positions[tri[2]]) / 3.0;
+            for (int axis = 0; axis < 3; ++axis) centroids[3 * t + axis] = sortable(c[axis]);
+        }
+    });
+    std::vector<std::uint32_t> place(triangles);
+    meshopt_spatialSortRemap(place.data(), centroids.data(), triangles, 3 * sizeof(float));
+    order.triangle_source.resize(triangles);
+    for (std::size_t t = 0; t < triangles; ++t) order.triangle_source[place[t]] = static_cast<std::uint32_t>(t);
+    std::vector<std::uint32_t>().swap(place);
+    std::vector<float>().swap(centroids);
+
+    // Vertices numbered by first use in that order; unused ones after them.
+    std::vector<std::uint32_t> indices(3 * triangles);
+    for (std::size_t k = 0; k < triangles; ++k) {
+        const Triangle& tri = mesh.triangles[order.triangle_source[k]];
+        for (int i = 0; i < 3; ++i) indices[3 * k + i] = tri[i];
+    }
+    order.vertex_target.resize(vertices);
+    std::size_t used = meshopt_optimizeVertexFetchRemap(order.vertex_target.data(), indices.data(), indices.size(),
+                                                        vertices);
+    for (std::uint32_t& target : order.vertex_target) {
+        if (target == ~0u) target = static_cast<std::uint32_t>(used++);
+    }
+    order.vertex_source.resize(vertices);
+    for (std::size_t v = 0; v < vertices; ++v) order.vertex_source[order.vertex_target[v]] = static_cast<std::uint32_t>(v);
+    ++order.permutations_computed;
+}
+
+const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, MeshOrder& order) {
+    if (!should_reorder(scene, options)) {
+        order.triangle_source.clear();  // the id output and painter's ties take the pipeline's indices as they are
+        order.vertex_target.clear();
+        order.positions_data = order.triangles_data = nullptr;
+        return scene;
+    }
+    const Mesh& mesh = scene.mesh;
+    if (!same_mesh_as_before(mesh, order)) {
+        compute_mesh_order(mesh, order);
+        order.positions_data = mesh.positions.data();
+        order.triangles_data = mesh.triangles.data();
+        order.vertex_count = mesh.positions.size();
+        order.triangle_count = mesh.triangles.size();
+        order.triangles_sample = sample_triangles(mesh.triangles);
+    }
+    // The copy, from the caller's arrays as they are now.
+    copy_all_but_mesh(scene, order.scene);
+    Mesh& out = order.scene.mesh;
+    gather(mesh.positions, order.vertex_source, out.positions);
+    gather(mesh.colors, order.vertex_source, out.colors);
+    if (needs_computed_normals(scene, options)) {
+        calculate_normals_into(mesh.positions, mesh.triangles, order.normals_scratch, order.normals);
+        gather(order.normals, order.vertex_source, out.normals);
+    } else {
+        gather(mesh.normals, order.vertex_source, out.normals);
+    }
+    out.triangles.resize(mesh.triangles.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.triangles.size(), kGatherBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k) {
+            const Triangle& tri = mesh.triangles[order.triangle_source[k]];
+            out.triangles[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+        }
+    });
+    // Contract version 2's per-triangle attributes follow their triangles.
+    out.texcoords = mesh.texcoords;
+    gather_corner_indices(mesh.texcoord_triangles, order.triangle_source, out.texcoord_triangles);
+    out.file_normals = mesh.file_normals;
+    gather_corner_indices(mesh.file_normal_triangles, order.triangle_source, out.file_normal_triangles);
+    out.materials = mesh.materials;
+    gather(mesh.face_materials, order.triangle_source, out.face_materials);
+    return order.scene;
+}
+
+}  // namespace phongrast::detail

@@ -1,0 +1,85 @@
+// Mesh order (internal header): before a large mesh enters the pipeline it
+// is copied into an order whose memory accesses stay local, whatever order
+// the caller's arrays come in: triangles sorted spatially (Morton order of
+// their centroids), vertices renumbered by first use in that order. Set-up,
+// clipping and painter's keys then read neighbouring vertices for
+// neighbouring triangles instead of three random cache lines per triangle.
+//
+// The picture does not change, bit for bit: every per-vertex and
+// per-triangle computation is the same whatever the order (each triangle
+// keeps its corners in their order), and the two things that depend on a
+// triangle's place in the list use its original index: painter's tie-break
+// (equal mean depths are drawn in the caller's order: painter_order()'s
+// tie rank) and the id output (AovPassInput::original_triangle). Computed
+// normals are summed in the caller's order too (they are computed from the
+// caller's mesh, then permuted).
+//
+// What a Renderer keeps: the permutation, computed once per mesh (the
+// expensive part: a spatial sort), and the reordered copy's memory. The
+// copy is rebuilt from the caller's arrays on every frame, so a mesh edited
+// in place between frames is never drawn stale: only the permutation is
+// reused, and any permutation gives the same picture. Whether the
+// permutation is reused is decided by the mesh's identity (the arrays'
+// addresses and sizes and a sample of its triangles); guessing wrong costs
+// speed only, never correctness.
+#ifndef PHONGRAST_SRC_MESH_ORDER_HPP
+#define PHONGRAST_SRC_MESH_ORDER_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "normals_scratch.hpp"
+#include "phongrast/render.hpp"
+
+namespace phongrast::detail {
+
+/// Meshes with fewer triangles are rendered in the caller's order: their
+/// vertex arrays stay in cache, and the copy would cost more than it saves
+/// (measured: docs/performance.md, "Mesh order").
+constexpr std::size_t kReorderMinTriangles = 65536;
+
+/// The threshold in force: kReorderMinTriangles, unless a test or benchmark
+/// sets another (0: reorder every mesh; SIZE_MAX: never, today's path).
+/// Returns the previous value.
+std::size_t set_reorder_min_triangles(std::size_t triangles);
+std::size_t reorder_min_triangles();
+
+/// A mesh's reordering, and the reordered scene of the frame being rendered.
+struct MeshOrder {
+    /// Internal triangle -> the caller's triangle (empty: not reordered).
+    std::vector<std::uint32_t> triangle_source;
+    /// The caller's vertex -> internal vertex, and its inverse.
+    std::vector<std::uint32_t> vertex_target, vertex_source;
+    /// What the permutation was computed for (only the speed depends on it).
+    const void* positions_data = nullptr;
+    const void* triangles_data = nullptr;
+    std::size_t vertex_count = 0, triangle_count = 0;
+    std::uint64_t triangles_sample = 0;
+    /// The caller's scene with the mesh in internal order, rebuilt every frame.
+    Scene scene;
+    NormalsScratch normals_scratch;
+    std::vector<glm::vec3> normals;  ///< computed in the caller's order, before the permutation
+    /// Permutations computed so far (tests: a Renderer computes one per mesh).
+    std::size_t permutations_computed = 0;
+};
+
+/// Whether `scene` is rendered reordered with `options`: a mesh of at least
+/// reorder_min_triangles() triangles (a single mesh: a scene of objects is
+/// left as it is), and no back-face culling, whose closedness test sums
+/// per-vertex volumes whose rounding could depend on vertex numbering.
+bool should_reorder(const Scene& scene, const RenderOptions& options);
+
+/// The scene the pipeline renders: `scene` itself when !should_reorder(),
+/// else order.scene, `scene` with its mesh permuted (order.triangle_source
+/// then names each internal triangle's original index; otherwise it is
+/// empty). Reuses order's permutation when the mesh looks like the last one.
+const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, MeshOrder& order);
+
+/// The permutation alone, for tests and benchmarks: fills order's
+/// triangle_source, vertex_target and vertex_source for `mesh`.
+void compute_mesh_order(const Mesh& mesh, MeshOrder& order);
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_MESH_ORDER_HPP
