@@ -4,6 +4,7 @@
 #include <atomic>
 #include <limits>
 
+#include <glm/common.hpp>
 #include <meshoptimizer.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -37,10 +38,23 @@ void gather_corner_indices(const std::vector<Triangle>& in, const std::vector<st
     gather(in, source, out);
 }
 
-/// A float the spatial sort can quantise: finite, clamped to float's range.
-float sortable(double value) {
-    constexpr double kLimit = 1e30;
-    return static_cast<float>(std::clamp(value, -kLimit, kLimit));
+/// Cells per axis of the spatial sort's grid.
+constexpr std::uint32_t kCells = 64;
+
+/// A cell coordinate, 0..kCells-1, from a position scaled to [0, kCells]
+/// (clamped: rounding, and an infinite or NaN extent, stay in the grid).
+std::uint32_t grid_coordinate(double scaled) {
+    if (!(scaled > 0.0)) return 0;
+    return scaled >= kCells - 1 ? kCells - 1 : static_cast<std::uint32_t>(scaled);
+}
+
+/// The 18-bit Morton code of a cell: x, y and z bits interleaved.
+std::uint32_t morton_code(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+    std::uint32_t code = 0;
+    for (int bit = 0; bit < 6; ++bit) {
+        code |= ((x >> bit) & 1u) << (3 * bit) | ((y >> bit) & 1u) << (3 * bit + 1) | ((z >> bit) & 1u) << (3 * bit + 2);
+    }
+    return code;
 }
 
 /// A few triangles of the mesh, hashed: with the arrays' addresses and
@@ -99,22 +113,35 @@ bool should_reorder(const Scene& scene, const RenderOptions& options) {
 
 void compute_mesh_order(const Mesh& mesh, MeshOrder& order) {
     const std::size_t triangles = mesh.triangles.size(), vertices = mesh.positions.size();
-    // Triangles in Morton order of their centroids.
-    std::vector<float> centroids(3 * triangles);
+    // Triangles by the Morton code of their centroid's cell in a 64^3 grid
+    // over the mesh's bounding box, in the caller's order within a cell: one
+    // counting sort (meshopt_spatialSortRemap's full 30-bit sort took 0.25 s
+    // of a 1.3M-triangle frame; cells of a few hundred triangles are as local).
+    glm::dvec3 low(std::numeric_limits<double>::max()), high(std::numeric_limits<double>::lowest());
+    for (const glm::dvec3& p : mesh.positions) {
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+    }
+    const glm::dvec3 extent = high - low;
+    const glm::dvec3 scale(kCells / std::max(extent.x, 1e-300), kCells / std::max(extent.y, 1e-300),
+                           kCells / std::max(extent.z, 1e-300));
+    std::vector<std::uint32_t> cell(triangles);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, kGatherBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t t = range.begin(); t != range.end(); ++t) {
             const Triangle& tri = mesh.triangles[t];
             const glm::dvec3 c = (mesh.positions[tri[0]] + mesh.positions[tri[1]] + mesh.positions[tri[2]]) / 3.0;
-            for (int axis = 0; axis < 3; ++axis) centroids[3 * t + axis] = sortable(c[axis]);
+            std::uint32_t q[3];
+            for (int axis = 0; axis < 3; ++axis) q[axis] = grid_coordinate((c[axis] - low[axis]) * scale[axis]);
+            cell[t] = morton_code(q[0], q[1], q[2]);
         }
     });
-    std::vector<std::uint32_t> place(triangles);
-    meshopt_spatialSortRemap(place.data(), centroids.data(), triangles, 3 * sizeof(float));
+    std::vector<std::uint32_t> start(std::size_t(kCells) * kCells * kCells + 1, 0);
+    for (std::uint32_t code : cell) ++start[code + 1];
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
     order.triangle_source.resize(triangles);
-    for (std::size_t t = 0; t < triangles; ++t) order.triangle_source[place[t]] = static_cast<std::uint32_t>(t);
-    std::vector<std::uint32_t>().swap(place);
-    std::vector<float>().swap(centroids);
+    for (std::size_t t = 0; t < triangles; ++t) order.triangle_source[start[cell[t]]++] = static_cast<std::uint32_t>(t);
+    std::vector<std::uint32_t>().swap(cell);
 
     // Vertices numbered by first use in that order; unused ones after them.
     std::vector<std::uint32_t> indices(3 * triangles);
