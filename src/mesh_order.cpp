@@ -72,8 +72,8 @@ std::uint64_t sample_triangles(const std::vector<Triangle>& triangles) {
 }
 
 bool same_mesh_as_before(const Mesh& mesh, const MeshOrder& order) {
-    return order.triangle_source.size() == mesh.triangles.size() &&
-           order.vertex_target.size() == mesh.positions.size() && order.positions_data == mesh.positions.data() &&
+    return order.triangle_count == mesh.triangles.size() && order.vertex_count == mesh.positions.size() &&
+           order.positions_data == mesh.positions.data() &&
            order.triangles_data == mesh.triangles.data() && order.triangles_sample == sample_triangles(mesh.triangles);
 }
 
@@ -99,16 +99,48 @@ bool needs_computed_normals(const Scene& scene, const RenderOptions& options) {
     return find_effects(scene).normals || !options.specialize_effects || options.aovs.normal;
 }
 
-std::atomic<std::size_t> g_reorder_min_triangles{kReorderMinTriangles};
+constexpr std::size_t kNoOverride = std::numeric_limits<std::size_t>::max() - 1;
+std::atomic<std::size_t> g_reorder_min_triangles{kNoOverride};
+std::atomic<bool> g_reorder_always{false};
 
 }  // namespace
 
 std::size_t set_reorder_min_triangles(std::size_t triangles) { return g_reorder_min_triangles.exchange(triangles); }
-std::size_t reorder_min_triangles() { return g_reorder_min_triangles.load(); }
+std::size_t reorder_min_triangles(bool one_off) {
+    const std::size_t value = g_reorder_min_triangles.load();
+    if (value != kNoOverride) return value;
+    return one_off ? kReorderMinTrianglesOneOff : kReorderMinTriangles;
+}
+bool set_reorder_always(bool always) { return g_reorder_always.exchange(always); }
 
-bool should_reorder(const Scene& scene, const RenderOptions& options) {
-    return scene.objects.empty() && scene.mesh.triangles.size() >= reorder_min_triangles() &&
+bool should_reorder(const Scene& scene, const RenderOptions& options, bool one_off) {
+    return scene.objects.empty() && scene.mesh.triangles.size() >= reorder_min_triangles(one_off) &&
            options.back_faces == BackFaces::draw;
+}
+
+double local_order_misses(const Mesh& mesh) {
+    constexpr std::size_t kLines = 4096, kWindow = 8192, kWindows = 16;
+    constexpr std::size_t kVertexBytes = 24, kLineBytes = 64;
+    const std::size_t triangles = mesh.triangles.size();
+    if (triangles == 0) return 0.0;
+    const std::size_t windows = std::min(kWindows, (triangles + kWindow - 1) / kWindow);
+    std::uint64_t misses = 0, read = 0;
+    std::vector<std::uint64_t> tag(kLines);
+    for (std::size_t w = 0; w < windows; ++w) {
+        std::fill(tag.begin(), tag.end(), ~std::uint64_t(0));
+        const std::size_t begin = windows == 1 ? 0 : w * (triangles - std::min(triangles, kWindow)) / (windows - 1);
+        const std::size_t end = std::min(triangles, begin + kWindow);
+        for (std::size_t t = begin; t < end; ++t) {
+            for (std::uint32_t index : mesh.triangles[t]) {
+                const std::uint64_t line = std::uint64_t(index) * kVertexBytes / kLineBytes;
+                std::uint64_t& slot = tag[line % kLines];
+                misses += slot != line;
+                slot = line;
+            }
+        }
+        read += end - begin;
+    }
+    return double(misses) / double(read);
 }
 
 void compute_mesh_order(const Mesh& mesh, MeshOrder& order) {
@@ -160,23 +192,31 @@ void compute_mesh_order(const Mesh& mesh, MeshOrder& order) {
     ++order.permutations_computed;
 }
 
-const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, MeshOrder& order) {
-    if (!should_reorder(scene, options)) {
-        order.triangle_source.clear();  // the id output and painter's ties take the pipeline's indices as they are
-        order.vertex_target.clear();
-        order.positions_data = order.triangles_data = nullptr;
-        return scene;
-    }
+const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, bool one_off,
+                                   MeshOrder& order) {
+    order.reordered = false;  // the id output and painter's ties take the pipeline's indices as they are
+    if (!should_reorder(scene, options, one_off)) return scene;
     const Mesh& mesh = scene.mesh;
     if (!same_mesh_as_before(mesh, order)) {
-        compute_mesh_order(mesh, order);
+        order.caller_order_is_local =
+            !g_reorder_always.load() && local_order_misses(mesh) < kReorderMinMissesPerTriangle;
+        if (order.caller_order_is_local) {
+            // Remembered as this mesh's (same_mesh_as_before() then holds), with no permutation.
+            order.triangle_source.clear();
+            order.vertex_target.clear();
+            order.vertex_source.clear();
+        } else {
+            compute_mesh_order(mesh, order);
+        }
         order.positions_data = mesh.positions.data();
         order.triangles_data = mesh.triangles.data();
         order.vertex_count = mesh.positions.size();
         order.triangle_count = mesh.triangles.size();
         order.triangles_sample = sample_triangles(mesh.triangles);
     }
+    if (order.caller_order_is_local) return scene;
     // The copy, from the caller's arrays as they are now.
+    order.reordered = true;
     copy_all_but_mesh(scene, order.scene);
     Mesh& out = order.scene.mesh;
     gather(mesh.positions, order.vertex_source, out.positions);

@@ -35,15 +35,35 @@
 namespace phongrast::detail {
 
 /// Meshes with fewer triangles are rendered in the caller's order: their
-/// vertex arrays stay in cache, and the copy would cost more than it saves
-/// (measured: docs/performance.md, "Mesh order").
-constexpr std::size_t kReorderMinTriangles = 65536;
+/// vertex arrays stay in cache, and the copy would cost more than it saves.
+/// A Renderer pays the permutation once per mesh, render() on every call,
+/// so render() starts higher (measured: docs/performance.md, "Mesh order").
+constexpr std::size_t kReorderMinTriangles = 16384;
+constexpr std::size_t kReorderMinTrianglesOneOff = 65536;
 
-/// The threshold in force: kReorderMinTriangles, unless a test or benchmark
-/// sets another (0: reorder every mesh; SIZE_MAX: never, today's path).
-/// Returns the previous value.
+/// A mesh whose order already misses the cache less than this, in vertex
+/// cache lines per triangle (local_order_misses()), is rendered as it
+/// comes: a generator's or a tool's well-ordered mesh pays no copy.
+/// Measured on the 1.3M sphere: about 0.2 in the generator's and the
+/// spatial order, 3 shuffled.
+constexpr double kReorderMinMissesPerTriangle = 1.0;
+
+/// Overrides both thresholds of triangles (a test or benchmark: 0 reorders
+/// every mesh whose order is not local, SIZE_MAX none, today's path);
+/// returns the previous override, 0 meaning... see reorder_min_triangles().
 std::size_t set_reorder_min_triangles(std::size_t triangles);
-std::size_t reorder_min_triangles();
+/// The threshold in force: the override when set, else the constant for a
+/// Renderer (`one_off` false) or render() (true).
+std::size_t reorder_min_triangles(bool one_off = false);
+/// Turns the locality test off (true: every mesh over the threshold is
+/// reordered, for tests); returns the previous setting.
+bool set_reorder_always(bool always);
+
+/// Vertex cache lines missed per triangle when the mesh's triangles are
+/// read in its order, in a small direct-mapped model of the cache (4,096
+/// lines of 64 bytes, 24-byte vertices), over up to 16 windows of 8,192
+/// triangles spread over the mesh.
+double local_order_misses(const Mesh& mesh);
 
 /// A mesh's reordering, and the reordered scene of the frame being rendered.
 struct MeshOrder {
@@ -56,6 +76,13 @@ struct MeshOrder {
     const void* triangles_data = nullptr;
     std::size_t vertex_count = 0, triangle_count = 0;
     std::uint64_t triangles_sample = 0;
+    /// The caller's order was found local enough: rendered as it comes.
+    bool caller_order_is_local = false;
+    /// This frame renders `scene` (below) rather than the caller's.
+    bool reordered = false;
+
+    /// The caller's index of each triangle the pipeline sees, or null when it sees the caller's mesh.
+    const std::uint32_t* original_triangles() const { return reordered ? triangle_source.data() : nullptr; }
     /// The caller's scene with the mesh in internal order, rebuilt every frame.
     Scene scene;
     NormalsScratch normals_scratch;
@@ -64,17 +91,18 @@ struct MeshOrder {
     std::size_t permutations_computed = 0;
 };
 
-/// Whether `scene` is rendered reordered with `options`: a mesh of at least
-/// reorder_min_triangles() triangles (a single mesh: a scene of objects is
+/// Whether `scene` may be rendered reordered with `options`: a mesh of at least
+/// reorder_min_triangles(one_off) triangles (a single mesh: a scene of objects is
 /// left as it is), and no back-face culling, whose closedness test sums
 /// per-vertex volumes whose rounding could depend on vertex numbering.
-bool should_reorder(const Scene& scene, const RenderOptions& options);
+bool should_reorder(const Scene& scene, const RenderOptions& options, bool one_off);
 
-/// The scene the pipeline renders: `scene` itself when !should_reorder(),
-/// else order.scene, `scene` with its mesh permuted (order.triangle_source
+/// The scene the pipeline renders: `scene` itself when !should_reorder() or
+/// when its order is already local (local_order_misses()), else order.scene, `scene` with its mesh permuted (order.triangle_source
 /// then names each internal triangle's original index; otherwise it is
 /// empty). Reuses order's permutation when the mesh looks like the last one.
-const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, MeshOrder& order);
+const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, bool one_off,
+                                   MeshOrder& order);
 
 /// The permutation alone, for tests and benchmarks: fills order's
 /// triangle_source, vertex_target and vertex_source for `mesh`.

@@ -49,7 +49,7 @@ struct RendererState final : PassRenderer {
     void render_pass(int rows, int columns, glm::dvec2 sample_offset, RenderStats& stats, Image& image) override {
         progress->set_pass(passes_done++, passes);
         const PassOutput out{image, aov_planes, aov_samples,
-                             mesh_order.triangle_source.empty() ? nullptr : mesh_order.triangle_source.data()};
+                             mesh_order.original_triangles()};
         if (options.precision == Precision::double_float) {
             detail::render_pass(*scene, options, rows, columns, sample_offset, twice, stats, out, *progress);
         } else {
@@ -59,13 +59,14 @@ struct RendererState final : PassRenderer {
         if (aov_planes.any()) resolve_aovs(aov_samples, rows / scene->image.rows, aov_planes, result.aovs);
     }
 
-    void render(const Scene& rendered) {
+    /// `one_off`: render() (the reordering is not kept), not a Renderer.
+    void render(const Scene& rendered, bool one_off = false) {
         const auto start = std::chrono::steady_clock::now();
         validate_render_request(rendered, options);
         ProgressMonitor monitor(options.progress);
         const int factor = options.samples_per_axis;
         // Mesh order hook: from here on the pipeline sees the mesh in a cache-friendly order.
-        const Scene& drawn = scene_in_render_order(rendered, options, mesh_order);
+        const Scene& drawn = scene_in_render_order(rendered, options, one_off, mesh_order);
         scene = &drawn;
         progress = &monitor;
         aov_planes = options.aovs.any() ? sample_planes_for(options.aovs, factor) : AovRequest{};
@@ -108,7 +109,7 @@ void validate_render(const Scene& scene, const RenderOptions& options) {
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     detail::RendererState state;
     state.options = options;
-    state.render(scene);
+    state.render(scene, true);
     return std::move(state.result);
 }
 

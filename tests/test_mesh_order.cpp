@@ -21,19 +21,26 @@ using test_render_modes::same_bits;
 
 namespace {
 
-/// Sets the reordering threshold for one scope.
+constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
+
+/// Sets the reordering threshold for one scope: 0 reorders every mesh,
+/// whatever its order (the locality test off), kNever none.
 class ReorderThreshold {
 public:
-    explicit ReorderThreshold(std::size_t triangles) : previous_(detail::set_reorder_min_triangles(triangles)) {}
-    ~ReorderThreshold() { detail::set_reorder_min_triangles(previous_); }
+    explicit ReorderThreshold(std::size_t triangles)
+        : previous_(detail::set_reorder_min_triangles(triangles)),
+          previous_always_(detail::set_reorder_always(triangles != kNever)) {}
+    ~ReorderThreshold() {
+        detail::set_reorder_min_triangles(previous_);
+        detail::set_reorder_always(previous_always_);
+    }
     ReorderThreshold(const ReorderThreshold&) = delete;
     ReorderThreshold& operator=(const ReorderThreshold&) = delete;
 
 private:
     std::size_t previous_;
+    bool previous_always_;
 };
-
-constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
 
 bool same_aovs(const AovPlanes& a, const AovPlanes& b) {
     const auto same = [](const auto& x, const auto& y) {
@@ -144,6 +151,31 @@ TEST_CASE("the permutation is a real one: a shuffled mesh is renumbered") {
     // The first triangle's vertices are the first three (numbered by first use).
     const Triangle& first = mesh.triangles[order.triangle_source[0]];
     for (std::uint32_t index : first) CHECK(order.vertex_target[index] < 3);
+}
+
+TEST_CASE("the locality test tells a generator's order and the spatial one from a shuffled one") {
+    const Mesh sphere = test_meshes::icosphere(60, 0.08);  // 72,000 triangles
+    const double generator = detail::local_order_misses(sphere);
+    const double shuffled = detail::local_order_misses(shuffled_vertices(shuffled_faces(sphere, 11), 12));
+    const double faces_shuffled = detail::local_order_misses(shuffled_faces(sphere, 13));
+    INFO("misses per triangle: generator " << generator << ", shuffled " << shuffled << ", faces shuffled "
+                                           << faces_shuffled);
+    CHECK(generator < detail::kReorderMinMissesPerTriangle);
+    CHECK(shuffled > detail::kReorderMinMissesPerTriangle);
+    CHECK(faces_shuffled > detail::kReorderMinMissesPerTriangle);
+    // The renderer's own order of the shuffled mesh is local again.
+    const Mesh mixed = shuffled_vertices(shuffled_faces(sphere, 11), 12);
+    detail::MeshOrder order;
+    detail::compute_mesh_order(mixed, order);
+    Mesh spatial = mixed;
+    for (std::size_t k = 0; k < mixed.triangles.size(); ++k) {
+        const Triangle& tri = mixed.triangles[order.triangle_source[k]];
+        spatial.triangles[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+    }
+    const double reordered = detail::local_order_misses(spatial);
+    INFO("reordered: " << reordered);
+    CHECK(reordered < detail::kReorderMinMissesPerTriangle);
+    CHECK(detail::local_order_misses(Mesh{}) == 0.0);
 }
 
 TEST_CASE("a reordered mesh renders the same bits in every shader, mode and extra output") {
