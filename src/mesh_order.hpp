@@ -1,7 +1,8 @@
 // Mesh order (internal header): before a large mesh enters the pipeline it
 // is copied into an order whose memory accesses stay local, whatever order
-// the caller's arrays come in: triangles sorted spatially (Morton order of
-// their centroids), vertices renumbered by first use in that order. Set-up,
+// the caller's arrays come in: triangles sorted spatially (by the Morton
+// code of their centroid's cell in a 64^3 grid), vertices renumbered by
+// first use in that order. Set-up,
 // clipping and painter's keys then read neighbouring vertices for
 // neighbouring triangles instead of three random cache lines per triangle.
 //

@@ -65,9 +65,6 @@ struct RendererState final : PassRenderer {
         validate_render_request(rendered, options);
         ProgressMonitor monitor(options.progress);
         const int factor = options.samples_per_axis;
-        // Mesh order hook: from here on the pipeline sees the mesh in a cache-friendly order.
-        const Scene& drawn = scene_in_render_order(rendered, options, one_off, mesh_order);
-        scene = &drawn;
         progress = &monitor;
         aov_planes = options.aovs.any() ? sample_planes_for(options.aovs, factor) : AovRequest{};
         passes = factor > 1 && options.sample_pattern == SamplePattern::rotated_grid ? factor * factor : 1;
@@ -75,7 +72,13 @@ struct RendererState final : PassRenderer {
         reset_aov_planes(rendered.image.rows, rendered.image.columns, aov_planes, result.aovs);
         result.stats = RenderStats{};
         result.stats.triangles_in = rendered.mesh.triangles.size();
-        arena_for(options.threads).execute([&] { render_and_resolve(drawn, options, *this, resolve_images, result); });
+        arena_for(options.threads).execute([&] {
+            // Mesh order hook: from here on the pipeline sees the mesh in a cache-friendly order
+            // (inside the arena: the copy is made with the threads the options ask for).
+            const Scene& drawn = scene_in_render_order(rendered, options, one_off, mesh_order);
+            scene = &drawn;
+            render_and_resolve(drawn, options, *this, resolve_images, result);
+        });
         scene = nullptr;
         progress = nullptr;
         if (aov_planes.any()) finish_aovs(options.aovs, factor * factor, result.aovs);
