@@ -283,3 +283,28 @@ TEST_CASE("a Renderer never draws a mesh edited in place from a stale copy") {
     for (glm::vec3& n : scene.mesh.normals) n = glm::vec3(n.y, n.z, n.x);
     CHECK(same_bits(renderer.render(scene).image, fresh().image));
 }
+
+TEST_CASE("the permutation is computed once per mesh, again for another mesh") {
+    ReorderThreshold always(0);
+    Scene scene = sphere_scene(shuffled_faces(test_meshes::icosphere(11, 0.08), 14));
+    const RenderOptions options = RenderOptions::exact();
+    detail::MeshOrder order;
+    const Scene* drawn = &detail::scene_in_render_order(scene, options, false, order);
+    CHECK(drawn == &order.scene);
+    CHECK(order.original_triangles() != nullptr);
+    CHECK(order.permutations_computed == 1);
+    // Same mesh, positions edited in place: the permutation is kept, the copy follows the edit.
+    scene.mesh.positions[0] += glm::dvec3(0.01);
+    detail::scene_in_render_order(scene, options, false, order);
+    CHECK(order.permutations_computed == 1);
+    CHECK(order.scene.mesh.positions[order.vertex_target[0]] == scene.mesh.positions[0]);
+    // Another mesh of the same size: a new permutation.
+    scene.mesh = shuffled_faces(test_meshes::icosphere(11, 0.08), 15);
+    detail::scene_in_render_order(scene, options, false, order);
+    CHECK(order.permutations_computed == 2);
+    // Culling keeps the caller's order, and so the caller's indices.
+    RenderOptions culling = options;
+    culling.back_faces = BackFaces::cull_when_hidden;
+    CHECK(&detail::scene_in_render_order(scene, culling, false, order) == &scene);
+    CHECK(order.original_triangles() == nullptr);
+}
