@@ -21,6 +21,7 @@
 #include <CLI/CLI.hpp>
 
 #include "phongrast/render.hpp"
+#include "mesh_orders.hpp"
 #include "support/speed_scenes.hpp"
 #include "support/timing.hpp"
 
@@ -35,7 +36,7 @@ constexpr double kBudgetPerTriangle = 200.0, kBudgetPerPixel = 32.0;
 constexpr int kMaxRounds = 101;
 
 struct Settings {
-    std::string scene = "icosphere-9.7k", mode = "exact";
+    std::string scene = "icosphere-9.7k", mode = "exact", order = "generator";
     std::vector<int> threads = {1, 2};
     int rows = 0, repeat = 5;
     double seconds = 2.0;
@@ -134,6 +135,12 @@ void run(const Settings& s) {
     const std::uint64_t program_bytes = support::peak_resident_bytes();  // before any scene exists
     support::NamedScene named = support::speed_scene(s.scene, s.rows);
     phongrast::Scene& scene = named.scene;
+    const std::string scene_class = support::speed_scene_class(named.name);
+    if (s.order != "generator") {
+        // The same mesh in another order (mesh_orders.hpp): the same pictures, the goals read per order.
+        scene.mesh = phongrast_bench::in_mesh_order(scene.mesh, s.order);
+        named.name += " (" + s.order + ")";
+    }
     const double triangles = double(scene.mesh.triangles.size());
     const double pixels = double(scene.image.rows) * double(scene.image.columns);
     const double budget = kBudgetPerTriangle * triangles + kBudgetPerPixel * pixels;
@@ -144,7 +151,7 @@ void run(const Settings& s) {
         const std::vector<double> ms = ambient_and_full_ms(scene, options_for(s.mode, threads), s.repeat, s.seconds);
         std::printf("| %s | %s | %.0f | %dx%d | %d | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f | %.1f | %.1f | %.1f | %s "
                     "| %.1f | %.1f | %s |\n",
-                    named.name.c_str(), support::speed_scene_class(named.name).c_str(), triangles, scene.image.columns,
+                    named.name.c_str(), scene_class.c_str(), triangles, scene.image.columns,
                     scene.image.rows, threads, ms[0], ms[1], ms[2], ms[3], ms[1] / ms[0], ms[2] / ms[1], ms[3] / ms[1],
                     double(program_bytes) / kMiB, double(mesh_bytes(scene.mesh)) / kMiB, double(peak.bytes) / kMiB, peak.at.c_str(),
                     double(peak.bytes) / triangles, budget / triangles, double(peak.bytes) <= budget ? "met" : "not met");
@@ -160,6 +167,8 @@ int main(int argc, char** argv) {
     app.add_option("--scene", s.scene,
                    "icosphere-9.7k, icosphere-125k, icosphere-1.3M, icosphere-8M or a mesh of ../shared/assets");
     app.add_option("--rows", s.rows, "image side in pixels (default: the scene class's)");
+    app.add_option("--order", s.order, "the mesh's order: generator, spatial or shuffled (bench/mesh_orders.hpp)")
+        ->check(CLI::IsMember(phongrast_bench::mesh_order_names()));
     app.add_option("--mode", s.mode, "RenderOptions: exact or seed")->check(CLI::IsMember({"exact", "seed"}));
     app.add_option("--threads", s.threads, "thread counts, one row each")->check(CLI::Range(1, 256));
     app.add_option("--repeat", s.repeat, "timed rounds (median), at least")->check(CLI::Range(1, 1000));

@@ -64,7 +64,9 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
                 }
                 out.depth[index] = static_cast<float>(surface_depth);
             }
-            if (planes.id) out.id[index] = static_cast<std::int32_t>(source);
+            if (planes.id) {
+                out.id[index] = static_cast<std::int32_t>(in.original_triangle ? in.original_triangle[source] : source);
+            }
             if (planes.uv && in.uv_in_lit) {
                 // As the textured kernels interpolate it: (w0 a + w1 b) + w2 c.
                 for (int c = 0; c < 2; ++c) {

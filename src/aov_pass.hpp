@@ -48,6 +48,9 @@ struct AovPassInput {
     /// The vertices' (s, t) is in their `lit` (Phong and flat of a scene with
     /// texture coordinates): the uv plane interpolates it; else it stays zero.
     bool uv_in_lit = false;
+    /// The caller's index of each triangle of a reordered mesh (mesh_order.hpp), which the id output
+    /// gives; null when the mesh is rendered in the caller's order.
+    const std::uint32_t* original_triangle = nullptr;
 };
 
 /// Fills `out` (already reset) for every band, in parallel over bands.

@@ -4,6 +4,10 @@
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "finite.hpp"
 #include "normals_scratch.hpp"
@@ -12,62 +16,81 @@
 
 namespace phongrast {
 namespace detail {
-namespace {
-
-/// body(i) for i in [0, count), with poll() (when given) before each block of
-/// indices: one test per block, so a render without progress reports pays nothing per element.
-template <typename Body>
-void for_each_polling(std::size_t count, const std::function<void()>& poll, const Body& body) {
-    constexpr std::size_t kPollEvery = 16384;
-    for (std::size_t begin = 0; begin < count; begin += kPollEvery) {
-        if (poll) poll();
-        const std::size_t end = std::min(count, begin + kPollEvery);
-        for (std::size_t i = begin; i < end; ++i) body(i);
-    }
-}
-
-}  // namespace
-
+// In parallel, and the same bits as one pass over the triangles in order:
+// each vertex's sums see its faces in the same order (ascending triangle,
+// then corner), whichever task or thread computes it. First every face's
+// cross product and length (in parallel over triangles); then the vertices
+// are split into as many ranges as the arena has threads, and each range's
+// task walks all triangles in order, adding only to its own vertices (a
+// sequential read of the index list per task; the scattered additions, the
+// cost on a mesh in a random order, are shared out); then each vertex is
+// normalised (in parallel).
 void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
                             NormalsScratch& scratch, std::vector<glm::vec3>& normals,
                             const std::function<void()>& poll) {
+    constexpr std::size_t kBlock = 16384;
+    const std::size_t vertex_count = positions.size(), triangle_count = triangles.size();
     std::vector<glm::dvec3>& sums = scratch.sums;
-    sums.assign(positions.size(), glm::dvec3(0.0));
+    sums.assign(vertex_count, glm::dvec3(0.0));
     // For the fallback: each vertex's largest adjacent face (twice its area) and unit normal.
     std::vector<double>& largest_area = scratch.largest_area;
-    largest_area.assign(positions.size(), 0.0);
+    largest_area.assign(vertex_count, 0.0);
     std::vector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
-    largest_face_normal.assign(positions.size(), glm::dvec3(0.0));
+    largest_face_normal.assign(vertex_count, glm::dvec3(0.0));
+    if (poll) poll();
 
-    for_each_polling(triangles.size(), poll, [&](std::size_t t) {
-        const Triangle& triangle = triangles[t];
-        const glm::dvec3& a = positions[triangle[0]];
-        const glm::dvec3& b = positions[triangle[1]];
-        const glm::dvec3& c = positions[triangle[2]];
-        // Edges from the first vertex keep the cross product small relative to
-        // the coordinates for meshes far from the origin.
-        const glm::dvec3 face = glm::cross(b - a, c - a);
-        if (!detail::all_finite(face)) return;
-        const double twice_area = glm::length(face);
-        for (std::uint32_t vertex : triangle) {
-            sums[vertex] += face;
-            if (twice_area > largest_area[vertex]) {
-                largest_area[vertex] = twice_area;
-                largest_face_normal[vertex] = face;
+    std::vector<glm::dvec4>& faces = scratch.faces;  // cross product, twice the area (-1: not finite, skipped)
+    faces.resize(triangle_count);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangle_count, kBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+            const Triangle& triangle = triangles[t];
+            const glm::dvec3& a = positions[triangle[0]];
+            const glm::dvec3& b = positions[triangle[1]];
+            const glm::dvec3& c = positions[triangle[2]];
+            // Edges from the first vertex keep the cross product small relative to
+            // the coordinates for meshes far from the origin.
+            const glm::dvec3 face = glm::cross(b - a, c - a);
+            faces[t] = detail::all_finite(face) ? glm::dvec4(face, glm::length(face)) : glm::dvec4(0.0, 0.0, 0.0, -1.0);
+        }
+    });
+    if (poll) poll();
+
+    const std::size_t ranges = std::max<std::size_t>(
+        1, std::min<std::size_t>(static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
+                                 vertex_count / kBlock + 1));
+    tbb::parallel_for(std::size_t(0), ranges, [&](std::size_t range) {
+        const std::uint32_t first = static_cast<std::uint32_t>(range * vertex_count / ranges);
+        const std::uint32_t end = static_cast<std::uint32_t>((range + 1) * vertex_count / ranges);
+        for (std::size_t t = 0; t < triangle_count; ++t) {
+            for (std::uint32_t vertex : triangles[t]) {
+                if (vertex < first || vertex >= end) continue;
+                const glm::dvec4& face = faces[t];
+                const double twice_area = face.w;
+                if (twice_area < 0.0) continue;  // not finite
+                sums[vertex] += glm::dvec3(face);
+                if (twice_area > largest_area[vertex]) {
+                    largest_area[vertex] = twice_area;
+                    largest_face_normal[vertex] = glm::dvec3(face);
+                }
             }
         }
     });
+    if (poll) poll();
 
-    normals.resize(positions.size());
-    for_each_polling(positions.size(), poll, [&](std::size_t vertex) {
-        glm::dvec3 normal = safe_normalize<double>(sums[vertex]);
-        // A sum that is tiny relative to its largest face means opposite faces
-        // cancelled (two-sided sheet): its direction is rounding noise.
-        const double sum_length = glm::length(sums[vertex]);
-        if (normal == glm::dvec3(0.0) || !(sum_length > 1e-12 * largest_area[vertex])) {
-            normal = safe_normalize<double>(largest_face_normal[vertex]);
+    normals.resize(vertex_count);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_count, kBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t vertex = range.begin(); vertex != range.end(); ++vertex) {
+            glm::dvec3 normal = safe_normalize<double>(sums[vertex]);
+            // A sum that is tiny relative to its largest face means opposite faces
+            // cancelled (two-sided sheet): its direction is rounding noise.
+            const double sum_length = glm::length(sums[vertex]);
+            if (normal == glm::dvec3(0.0) || !(sum_length > 1e-12 * largest_area[vertex])) {
+                normal = safe_normalize<double>(largest_face_normal[vertex]);
+            }
+            normals[vertex] = glm::vec3(normal);
         }
-        normals[vertex] = glm::vec3(normal);
     });
 }
 

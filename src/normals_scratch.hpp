@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "phongrast/mesh.hpp"
 
@@ -17,10 +18,12 @@ struct NormalsScratch {
     std::vector<glm::dvec3> sums;
     std::vector<double> largest_area;
     std::vector<glm::dvec3> largest_face_normal;
+    std::vector<glm::dvec4> faces;  ///< per triangle: its cross product and length (-1: not finite)
 };
 
-/// calculate_normals(positions, triangles), written into `normals`. `poll`,
-/// if given, is called every few thousand triangles (the renderer's progress reports).
+/// calculate_normals(positions, triangles), written into `normals`, in
+/// parallel with the bits of one pass in order. `poll`, if given, is called
+/// on the calling thread between the passes (the renderer's progress reports).
 void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
                             NormalsScratch& scratch, std::vector<glm::vec3>& normals,
                             const std::function<void()>& poll = nullptr);

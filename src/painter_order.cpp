@@ -70,6 +70,22 @@ void sort_bucket(PaintRecord* data, PaintRecord* scratch, std::size_t n, std::ui
     }
 }
 
+/// Runs of equal keys in the sorted records data[0, n) put in the order of
+/// tie_rank (the caller's triangle order of a reordered mesh; each rank is
+/// a different triangle's, so the order is unique).
+void order_ties(PaintRecord* data, std::size_t n, const TieRank& tie_rank) {
+    for (std::size_t begin = 0; begin < n;) {
+        std::size_t end = begin + 1;
+        while (end < n && data[end].key == data[begin].key) ++end;
+        if (end - begin > 1) {
+            std::sort(data + begin, data + end, [&](const PaintRecord& a, const PaintRecord& b) {
+                return tie_rank(a.drawn) < tie_rank(b.drawn);
+            });
+        }
+        begin = end;
+    }
+}
+
 /// Set-up's records, chunk after chunk, in mesh order.
 struct SetupRecords {
     const std::vector<std::vector<DrawnTriangle>>& chunk_drawn;
@@ -160,7 +176,8 @@ void scatter_by_digit(const SetupRecords& records, const Digit& digit, PainterOr
 /// Sorts each bucket of memory.sorted (starts in memory.chunk_offsets) on the
 /// bits below `digit`, in tasks of kTaskBuckets neighbours, each with
 /// scratch for its largest bucket: a small fraction of the records.
-void sort_buckets(const Digit& digit, PainterOrderMemory& memory, ProgressMonitor& progress) {
+void sort_buckets(const Digit& digit, PainterOrderMemory& memory, ProgressMonitor& progress,
+                  const TieRank& tie_rank) {
     const std::vector<std::size_t>& bucket_start = memory.chunk_offsets;
     constexpr std::size_t kTasks = kBuckets / kTaskBuckets;
     std::size_t room = 0;
@@ -179,6 +196,7 @@ void sort_buckets(const Digit& digit, PainterOrderMemory& memory, ProgressMonito
         for (std::size_t b = task * kTaskBuckets; b < (task + 1) * kTaskBuckets; ++b) {
             sort_bucket(memory.sorted.data() + bucket_start[b], scratch, bucket_start[b + 1] - bucket_start[b],
                         digit.base, digit.shift - digit.bits);
+            if (tie_rank) order_ties(memory.sorted.data() + bucket_start[b], bucket_start[b + 1] - bucket_start[b], tie_rank);
         }
     });
 }
@@ -187,7 +205,7 @@ void sort_buckets(const Digit& digit, PainterOrderMemory& memory, ProgressMonito
 
 void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
                    const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
-                   PainterOrderMemory& memory, ProgressMonitor& progress) {
+                   PainterOrderMemory& memory, ProgressMonitor& progress, const TieRank& tie_rank) {
     const SetupRecords records{chunk_drawn, chunk_keys, chunks};
     if (!sort) {
         keep_mesh_order(records, memory);
@@ -196,7 +214,7 @@ void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
     progress.begin_stage(0.35, 0.4, 3 * records.groups());
     const Digit digit = leading_digit(records, memory, progress);
     scatter_by_digit(records, digit, memory, progress);
-    sort_buckets(digit, memory, progress);
+    sort_buckets(digit, memory, progress, tie_rank);
     for (std::size_t group = 0; group < records.groups(); ++group) progress.piece_done();
     progress.throw_if_cancelled();
 }

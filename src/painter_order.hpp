@@ -7,7 +7,7 @@
 // to the smallest key, so that no pass is spent on bits every key shares),
 // and each bucket, small enough to stay in cache, is then sorted on its
 // own; a bucket too large for that gets another radix pass first. The sort
-// moves the 24-byte records themselves, so binning then reads them in order
+// moves the 16-byte records themselves, so binning then reads them in order
 // instead of jumping through an index. Ties are broken by the place of the
 // triangle's draws in set-up's mesh-order output, so the result is the one
 // order a stable sort gives, whatever the number of threads.
@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <vector>
 
 #include "phongrast/mesh.hpp"
@@ -65,15 +66,20 @@ struct PainterOrderMemory {
     std::vector<std::size_t> chunk_offsets;  ///< where each chunk starts in `sorted` (mesh order), or each bucket (sorting)
 };
 
+/// A drawn triangle's place among triangles of equal depth: its index in
+/// the caller's mesh when the pipeline renders it reordered (mesh_order.hpp).
+using TieRank = std::function<std::uint32_t(const DrawnTriangle&)>;
+
 /// Puts the drawn triangles of the first `chunks` set-up chunks into
 /// memory.sorted in painter's order: farthest mean z_c first, equal depths
-/// in mesh order. Triangles that draw nothing are not sorted at all;
+/// in mesh order, or by `tie_rank` when given (the caller's order of a
+/// reordered mesh). Triangles that draw nothing are not sorted at all;
 /// leaving them out changes no draw's place relative to another's. With
 /// `sort` false (the order cannot change the picture) they stay in mesh
 /// order. Reports progress through `progress`.
 void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
                    const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
-                   PainterOrderMemory& memory, ProgressMonitor& progress);
+                   PainterOrderMemory& memory, ProgressMonitor& progress, const TieRank& tie_rank = nullptr);
 
 /// The indices 0..n-1 of `depth` ordered as painter_order() orders
 /// triangles of those mean depths: what std::stable_sort with

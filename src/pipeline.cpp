@@ -131,8 +131,13 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                  textured_flat ? memory.specular_part_shaders.data() : nullptr};
     set_up_triangles(setup, memory.draws, stats, progress);
     const bool sort = !fill_plan.order_free || out.aov_planes.any();  // depth and id name the last triangle
+    // Mesh order hook: a reordered mesh's equal depths are drawn in the caller's triangle order.
+    const std::uint32_t* original = out.original_triangle;
+    const TieRank tie_rank = original == nullptr ? TieRank() : TieRank([&](const DrawnTriangle& drawn) {
+        return original[memory.draws.chunk_draws[drawn.chunk()][drawn.first()].source];
+    });
     painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, sort, memory.painter,
-                  progress);
+                  progress, tie_rank);
     if (sort) stats.triangles_sorted += memory.painter.sorted.size();
     bin_draws(memory.draws, memory.painter, rows, memory.binning, memory.bins);
 
@@ -145,7 +150,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                            options.interpolation == Interpolation::perspective_correct,
                                            fill_plan.depth_test ? memory.fill.depth_buffer.data() : nullptr,
                                            &scene.mesh.triangles, &memory.vertices.varyings, &view.frame,
-                                           texcoords_in_lit};
+                                           texcoords_in_lit, out.original_triangle};
         run_aov_pass(aov_input, out.aov_planes, out.aovs, progress);
     }
 }

@@ -49,6 +49,9 @@ struct PassOutput {
     Image& image;
     const AovRequest& aov_planes;
     AovSamples& aovs;
+    /// Mesh order hook: the caller's index of each triangle when the scene's mesh is a reordered copy
+    /// (mesh_order.hpp), for painter's ties and the id output; null: the mesh is the caller's.
+    const std::uint32_t* original_triangle = nullptr;
 };
 
 /// Renders `scene` at rows x columns samples, each sample `sample_offset`

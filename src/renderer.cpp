@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "aov_pass.hpp"
+#include "mesh_order.hpp"
 #include "phongrast/render.hpp"
 #include "pipeline.hpp"
 #include "progress_monitor.hpp"
@@ -30,6 +31,7 @@ struct RendererState final : PassRenderer {
     FrameMemory<double> twice;
     AovSamples aov_samples;  ///< one pass's extra outputs per sample, before their resolve into result.aovs
     SceneAssembly assembly;  ///< a version-2 scene as one render mesh, kept for the next frame
+    MeshOrder mesh_order;    ///< mesh order hook: a large mesh's cache-friendly copy and its permutation
     // During render():
     const Scene* scene = nullptr;          ///< the scene being rendered (assembled, for a version-2 scene)
     const AssembledScene* assembled = nullptr;  ///< what assembly made of it, or null (version 1)
@@ -49,7 +51,8 @@ struct RendererState final : PassRenderer {
 
     void render_pass(int rows, int columns, glm::dvec2 sample_offset, RenderStats& stats, Image& image) override {
         progress->set_pass(passes_done++, passes);
-        const PassOutput out{image, aov_planes, aov_samples};
+        const PassOutput out{image, aov_planes, aov_samples,
+                             mesh_order.original_triangles()};
         if (options.precision == Precision::double_float) {
             detail::render_pass(*scene, assembled, options, rows, columns, sample_offset, twice, stats, out,
                                 *progress);
@@ -61,7 +64,8 @@ struct RendererState final : PassRenderer {
         if (aov_planes.any()) resolve_aovs(aov_samples, rows / scene->image.rows, aov_planes, result.aovs);
     }
 
-    void render(const Scene& requested) {
+    /// `one_off`: render() (the reordering is not kept), not a Renderer.
+    void render(const Scene& requested, bool one_off = false) {
         const auto start = std::chrono::steady_clock::now();
         // A version-1 scene goes as it is; a version-2 one as the mesh assembly makes of it.
         assembled = needs_assembly(requested) ? &assembly.assemble(requested) : nullptr;
@@ -70,7 +74,6 @@ struct RendererState final : PassRenderer {
         if (assembled != nullptr) validate_textured_request(*assembled, rendered, options);
         ProgressMonitor monitor(options.progress);
         const int factor = options.samples_per_axis;
-        scene = &rendered;
         progress = &monitor;
         aov_planes = options.aovs.any() ? sample_planes_for(options.aovs, factor) : AovRequest{};
         passes = factor > 1 && options.sample_pattern == SamplePattern::rotated_grid ? factor * factor : 1;
@@ -78,7 +81,17 @@ struct RendererState final : PassRenderer {
         reset_aov_planes(rendered.image.rows, rendered.image.columns, aov_planes, result.aovs);
         result.stats = RenderStats{};
         result.stats.triangles_in = rendered.mesh.triangles.size();
-        arena_for(options.threads).execute([&] { render_and_resolve(rendered, options, *this, resolve_images, result); });
+        arena_for(options.threads).execute([&] {
+            // Mesh order hook: from here on the pipeline sees the mesh in a cache-friendly order
+            // (inside the arena: the copy is made with the threads the options ask for).
+            // An assembled (version-2) scene is drawn in assembly order: its per-triangle
+            // surfaces are indexed by that order, which the reordering does not permute.
+            mesh_order.reordered = false;
+            const Scene& drawn =
+                assembled != nullptr ? rendered : scene_in_render_order(rendered, options, one_off, mesh_order);
+            scene = &drawn;
+            render_and_resolve(drawn, options, *this, resolve_images, result);
+        });
         scene = nullptr;
         assembled = nullptr;
         progress = nullptr;
@@ -121,7 +134,7 @@ void validate_render(const Scene& scene, const RenderOptions& options) {
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     detail::RendererState state;
     state.options = options;
-    state.render(scene);
+    state.render(scene, true);
     return std::move(state.result);
 }
 

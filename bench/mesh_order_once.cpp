@@ -1,0 +1,173 @@
+// bench_mesh_order: what the order a mesh comes in costs, and what the
+// renderer's reordering (src/mesh_order.hpp) wins back. One process renders
+// one speed scene's mesh in the orders of mesh_orders.hpp in interleaved
+// rounds, with the reordering on (a Renderer pays it once per mesh; render()
+// on every call) and off (the mesh in the caller's order), and prints
+// medians and their ratio to the spatially ordered mesh ("on" is the
+// library's default: thresholds and locality test). --sweep instead times
+// icospheres of several sizes with every mesh reordered, whatever its
+// order, against none, to place the threshold of triangles.
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "mesh_order.hpp"
+#include "mesh_orders.hpp"
+#include "phongrast/render.hpp"
+#include "support/scenes.hpp"
+#include "support/speed_scenes.hpp"
+#include "support/timing.hpp"
+
+namespace {
+
+namespace support = phongrast::support;
+using phongrast_bench::in_mesh_order;
+
+constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
+
+struct Settings {
+    std::string scene = "icosphere-1.3M", shader = "gouraud";
+    int threads = 1, repeat = 5, rows = 0;
+    bool computed_normals = false, sweep = false;
+};
+
+/// One way of rendering: an order, reordering on or off, Renderer or render().
+struct Contender {
+    std::string label;
+    phongrast::Scene scene;
+    bool reorder = true, one_off = false;
+};
+
+/// Reordering as the library does it by default (both thresholds, the locality test).
+std::vector<double> time_contenders(std::vector<Contender>& contenders, const phongrast::RenderOptions& options,
+                                   int repeat) {
+    const std::size_t defaults = phongrast::detail::set_reorder_min_triangles(0);
+    phongrast::detail::set_reorder_min_triangles(defaults);
+    std::vector<phongrast::Renderer> renderers;
+    for (std::size_t k = 0; k < contenders.size(); ++k) renderers.emplace_back(options);
+    std::vector<std::function<double()>> calls;
+    for (std::size_t k = 0; k < contenders.size(); ++k) {
+        calls.push_back([&, k] {
+            const Contender& c = contenders[k];
+            const std::size_t previous = phongrast::detail::set_reorder_min_triangles(c.reorder ? defaults : kNever);
+            const double ms = support::time_ms([&] {
+                if (c.one_off) {
+                    phongrast::render(c.scene, options);
+                } else {
+                    renderers[k].render(c.scene);
+                }
+            });
+            phongrast::detail::set_reorder_min_triangles(previous);
+            return ms;
+        });
+    }
+    return support::interleaved_medians(repeat, 1, calls);
+}
+
+phongrast::RenderOptions options_for(const Settings& s) {
+    phongrast::RenderOptions options = phongrast::RenderOptions::exact();
+    options.threads = s.threads;
+    return options;
+}
+
+phongrast::Scene base_scene(const Settings& s, const std::string& name, int rows) {
+    phongrast::Scene scene = support::speed_scene(name, rows).scene;
+    scene.shader = phongrast::parse_shader(s.shader);
+    if (s.computed_normals) scene.mesh.normals.clear();  // computed on every frame, as for a file without normals
+    return scene;
+}
+
+void run_orders(const Settings& s) {
+    const phongrast::Scene base = base_scene(s, s.scene, s.rows);
+    std::vector<Contender> contenders;
+    for (const std::string& order : phongrast_bench::mesh_order_names()) {
+        phongrast::Scene scene = base;
+        scene.mesh = in_mesh_order(base.mesh, order);
+        contenders.push_back({order + ", Renderer", scene, true, false});
+        contenders.push_back({order + ", Renderer, not reordered", scene, false, false});
+        contenders.push_back({order + ", render()", scene, true, true});
+    }
+    const std::vector<double> ms = time_contenders(contenders, options_for(s), s.repeat);
+    const double spatial = ms[3];  // spatial, Renderer
+    std::printf("\n%s, %zu triangles, %dx%d, %s, %s normals, %d thread(s), median of %d interleaved rounds\n\n",
+                s.scene.c_str(), base.mesh.triangles.size(), base.image.columns, base.image.rows, s.shader.c_str(),
+                s.computed_normals ? "computed" : "given", s.threads, s.repeat);
+    std::printf("| mesh order, how | ms | / spatial (Renderer) |\n|---|---:|---:|\n");
+    for (std::size_t k = 0; k < contenders.size(); ++k) {
+        std::printf("| %s | %.1f | %.3f |\n", contenders[k].label.c_str(), ms[k], ms[k] / spatial);
+    }
+}
+
+/// Icospheres of several sizes at 512x512: reordering on against off, for a
+/// Renderer and for one-off render() calls, in the generator's order and shuffled.
+void run_sweep(const Settings& s) {
+    std::printf("\n| triangles | order | off ms | Renderer on / off | render() on / off |\n|---:|---|---:|---:|---:|\n");
+    for (int frequency : {16, 32, 57, 80, 128}) {
+        support::NamedScene named = support::icosphere_scene("sweep", frequency, 512);
+        named.scene.shader = phongrast::parse_shader(s.shader);
+        if (s.computed_normals) named.scene.mesh.normals.clear();
+        for (const std::string order : {"generator", "shuffled"}) {
+            phongrast::Scene scene = named.scene;
+            scene.mesh = in_mesh_order(named.scene.mesh, order);
+            // Threshold 0 for "on": every size is reordered.
+            std::vector<Contender> contenders = {{"off", scene, false, false}, {"on", scene, true, false},
+                                                 {"off, render()", scene, false, true},
+                                                 {"on, render()", scene, true, true}};
+            const std::size_t previous = phongrast::detail::set_reorder_min_triangles(0);
+            const bool previous_always = phongrast::detail::set_reorder_always(true);  // no locality test
+            std::vector<phongrast::Renderer> renderers;
+            std::vector<std::function<double()>> calls;
+            const phongrast::RenderOptions options = options_for(s);
+            for (std::size_t k = 0; k < contenders.size(); ++k) renderers.emplace_back(options);
+            for (std::size_t k = 0; k < contenders.size(); ++k) {
+                calls.push_back([&, k] {
+                    const Contender& c = contenders[k];
+                    phongrast::detail::set_reorder_min_triangles(c.reorder ? 0 : kNever);
+                    return support::time_ms([&] {
+                        if (c.one_off) {
+                            phongrast::render(c.scene, options);
+                        } else {
+                            renderers[k].render(c.scene);
+                        }
+                    });
+                });
+            }
+            const std::vector<double> ms = support::interleaved_medians(s.repeat, 1, calls);
+            phongrast::detail::set_reorder_min_triangles(previous);
+            phongrast::detail::set_reorder_always(previous_always);
+            std::printf("| %zu | %s | %.2f | %.3f | %.3f |\n", scene.mesh.triangles.size(), order.c_str(), ms[0],
+                        ms[1] / ms[0], ms[3] / ms[2]);
+            std::fflush(stdout);
+        }
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"what a mesh's order costs, and what the renderer's reordering wins back"};
+    Settings s;
+    app.add_option("--scene", s.scene, "speed scene (support/speed_scenes.hpp)");
+    app.add_option("--rows", s.rows, "image side in pixels (default: the scene class's)");
+    app.add_option("--shader", s.shader, "flat, gouraud or phong");
+    app.add_option("--threads", s.threads, "threads")->check(CLI::Range(1, 256));
+    app.add_option("--repeat", s.repeat, "timed rounds (median)")->check(CLI::Range(1, 1000));
+    app.add_flag("--computed-normals", s.computed_normals, "drop the mesh's normals: computed on every frame");
+    app.add_flag("--sweep", s.sweep, "icospheres of 5k-330k triangles: where reordering starts to pay");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        if (s.sweep) {
+            run_sweep(s);
+        } else {
+            run_orders(s);
+        }
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "bench_mesh_order: %s\n", error.what());
+        return 1;
+    }
+    return 0;
+}

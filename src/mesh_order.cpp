@@ -1,0 +1,248 @@
+#include "mesh_order.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <limits>
+
+#include <glm/common.hpp>
+#include <meshoptimizer.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "scene_analysis.hpp"
+
+namespace phongrast::detail {
+namespace {
+
+/// Elements gathered by one task.
+constexpr std::size_t kGatherBlock = 16384;
+
+/// out[i] = in[source[i]] for every i, in parallel; `out` resized (its memory reused).
+template <typename T>
+void gather(const std::vector<T>& in, const std::vector<std::uint32_t>& source, std::vector<T>& out) {
+    if (in.empty()) {
+        out.clear();
+        return;
+    }
+    out.resize(source.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, source.size(), kGatherBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) out[i] = in[source[i]];
+    });
+}
+
+/// Per-corner index triples (texture coordinates, file normals) follow
+/// their triangles; the values they index stay where they are.
+void gather_corner_indices(const std::vector<Triangle>& in, const std::vector<std::uint32_t>& source,
+                           std::vector<Triangle>& out) {
+    gather(in, source, out);
+}
+
+/// Cells per axis of the spatial sort's grid.
+constexpr std::uint32_t kCells = 64;
+
+/// A cell coordinate, 0..kCells-1, from a position scaled to [0, kCells]
+/// (clamped: rounding, and an infinite or NaN extent, stay in the grid).
+std::uint32_t grid_coordinate(double scaled) {
+    if (!(scaled > 0.0)) return 0;
+    return scaled >= kCells - 1 ? kCells - 1 : static_cast<std::uint32_t>(scaled);
+}
+
+/// The 18-bit Morton code of a cell: x, y and z bits interleaved.
+std::uint32_t morton_code(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+    std::uint32_t code = 0;
+    for (int bit = 0; bit < 6; ++bit) {
+        code |= ((x >> bit) & 1u) << (3 * bit) | ((y >> bit) & 1u) << (3 * bit + 1) | ((z >> bit) & 1u) << (3 * bit + 2);
+    }
+    return code;
+}
+
+/// A few triangles of the mesh, hashed: with the arrays' addresses and
+/// sizes, what tells one mesh from another for reusing a permutation.
+std::uint64_t sample_triangles(const std::vector<Triangle>& triangles) {
+    constexpr std::size_t kSamples = 1024;
+    std::uint64_t hash = 0x9e3779b97f4a7c15ull;
+    const std::size_t step = std::max<std::size_t>(1, triangles.size() / kSamples);
+    for (std::size_t t = 0; t < triangles.size(); t += step) {
+        for (std::uint32_t index : triangles[t]) {
+            hash ^= index + 0x9e3779b97f4a7c15ull + (hash << 6) + (hash >> 2);
+        }
+    }
+    return hash;
+}
+
+bool same_mesh_as_before(const Mesh& mesh, const MeshOrder& order) {
+    return order.triangle_count == mesh.triangles.size() && order.vertex_count == mesh.positions.size() &&
+           order.positions_data == mesh.positions.data() &&
+           order.triangles_data == mesh.triangles.data() && order.triangles_sample == sample_triangles(mesh.triangles);
+}
+
+/// Every field of the scene but its mesh (and objects, empty when reordering).
+void copy_all_but_mesh(const Scene& from, Scene& to) {
+    // A field added to Scene must be copied here (and the size below updated; x86-64).
+    static_assert(sizeof(void*) != 8 || sizeof(Scene) == 528, "copy_all_but_mesh() copies every field of Scene");
+    to.camera = from.camera;
+    to.image = from.image;
+    to.material = from.material;
+    to.material_fields = from.material_fields;
+    to.normals = from.normals;
+    to.ambient = from.ambient;
+    to.lights = from.lights;
+    to.shader = from.shader;
+    to.lighting = from.lighting;
+}
+
+/// The normals the pipeline would compute from the caller's mesh, when it
+/// would compute any: summed in the caller's triangle order, so the same bits.
+bool needs_computed_normals(const Scene& scene, const RenderOptions& options) {
+    if (!scene.mesh.normals.empty()) return false;
+    return find_effects(scene).normals || !options.specialize_effects || options.aovs.normal;
+}
+
+constexpr std::size_t kNoOverride = std::numeric_limits<std::size_t>::max() - 1;
+std::atomic<std::size_t> g_reorder_min_triangles{kNoOverride};
+std::atomic<bool> g_reorder_always{false};
+
+}  // namespace
+
+std::size_t set_reorder_min_triangles(std::size_t triangles) { return g_reorder_min_triangles.exchange(triangles); }
+std::size_t reorder_min_triangles(bool one_off) {
+    const std::size_t value = g_reorder_min_triangles.load();
+    if (value != kNoOverride) return value;
+    return one_off ? kReorderMinTrianglesOneOff : kReorderMinTriangles;
+}
+bool set_reorder_always(bool always) { return g_reorder_always.exchange(always); }
+
+bool should_reorder(const Scene& scene, const RenderOptions& options, bool one_off) {
+    return scene.objects.empty() && scene.mesh.triangles.size() >= reorder_min_triangles(one_off) &&
+           options.back_faces == BackFaces::draw;
+}
+
+double local_order_misses(const Mesh& mesh) {
+    constexpr std::size_t kLines = 4096, kWindow = 8192, kWindows = 16;
+    constexpr std::size_t kVertexBytes = 24, kLineBytes = 64;
+    const std::size_t triangles = mesh.triangles.size();
+    if (triangles == 0) return 0.0;
+    const std::size_t windows = std::min(kWindows, (triangles + kWindow - 1) / kWindow);
+    std::uint64_t misses = 0, read = 0;
+    std::vector<std::uint64_t> tag(kLines);
+    for (std::size_t w = 0; w < windows; ++w) {
+        std::fill(tag.begin(), tag.end(), ~std::uint64_t(0));
+        const std::size_t begin = windows == 1 ? 0 : w * (triangles - std::min(triangles, kWindow)) / (windows - 1);
+        const std::size_t end = std::min(triangles, begin + kWindow);
+        for (std::size_t t = begin; t < end; ++t) {
+            for (std::uint32_t index : mesh.triangles[t]) {
+                const std::uint64_t line = std::uint64_t(index) * kVertexBytes / kLineBytes;
+                std::uint64_t& slot = tag[line % kLines];
+                misses += slot != line;
+                slot = line;
+            }
+        }
+        read += end - begin;
+    }
+    return double(misses) / double(read);
+}
+
+void compute_mesh_order(const Mesh& mesh, MeshOrder& order) {
+    const std::size_t triangles = mesh.triangles.size(), vertices = mesh.positions.size();
+    // Triangles by the Morton code of their centroid's cell in a 64^3 grid
+    // over the mesh's bounding box, in the caller's order within a cell: one
+    // counting sort (meshopt_spatialSortRemap's full 30-bit sort took 0.25 s
+    // of a 1.3M-triangle frame; cells of a few hundred triangles are as local).
+    glm::dvec3 low(std::numeric_limits<double>::max()), high(std::numeric_limits<double>::lowest());
+    for (const glm::dvec3& p : mesh.positions) {
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+    }
+    const glm::dvec3 extent = high - low;
+    const glm::dvec3 scale(kCells / std::max(extent.x, 1e-300), kCells / std::max(extent.y, 1e-300),
+                           kCells / std::max(extent.z, 1e-300));
+    std::vector<std::uint32_t> cell(triangles);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles, kGatherBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t t = range.begin(); t != range.end(); ++t) {
+            const Triangle& tri = mesh.triangles[t];
+            const glm::dvec3 c = (mesh.positions[tri[0]] + mesh.positions[tri[1]] + mesh.positions[tri[2]]) / 3.0;
+            std::uint32_t q[3];
+            for (int axis = 0; axis < 3; ++axis) q[axis] = grid_coordinate((c[axis] - low[axis]) * scale[axis]);
+            cell[t] = morton_code(q[0], q[1], q[2]);
+        }
+    });
+    std::vector<std::uint32_t> start(std::size_t(kCells) * kCells * kCells + 1, 0);
+    for (std::uint32_t code : cell) ++start[code + 1];
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    order.triangle_source.resize(triangles);
+    for (std::size_t t = 0; t < triangles; ++t) order.triangle_source[start[cell[t]]++] = static_cast<std::uint32_t>(t);
+    std::vector<std::uint32_t>().swap(cell);
+
+    // Vertices numbered by first use in that order; unused ones after them.
+    std::vector<std::uint32_t> indices(3 * triangles);
+    for (std::size_t k = 0; k < triangles; ++k) {
+        const Triangle& tri = mesh.triangles[order.triangle_source[k]];
+        for (int i = 0; i < 3; ++i) indices[3 * k + i] = tri[i];
+    }
+    order.vertex_target.resize(vertices);
+    std::size_t used = meshopt_optimizeVertexFetchRemap(order.vertex_target.data(), indices.data(), indices.size(),
+                                                        vertices);
+    for (std::uint32_t& target : order.vertex_target) {
+        if (target == ~0u) target = static_cast<std::uint32_t>(used++);
+    }
+    order.vertex_source.resize(vertices);
+    for (std::size_t v = 0; v < vertices; ++v) order.vertex_source[order.vertex_target[v]] = static_cast<std::uint32_t>(v);
+    ++order.permutations_computed;
+}
+
+const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, bool one_off,
+                                   MeshOrder& order) {
+    order.reordered = false;  // the id output and painter's ties take the pipeline's indices as they are
+    if (!should_reorder(scene, options, one_off)) return scene;
+    const Mesh& mesh = scene.mesh;
+    if (!same_mesh_as_before(mesh, order)) {
+        order.caller_order_is_local =
+            !g_reorder_always.load() && local_order_misses(mesh) < kReorderMinMissesPerTriangle;
+        if (order.caller_order_is_local) {
+            // Remembered as this mesh's (same_mesh_as_before() then holds), with no permutation.
+            order.triangle_source.clear();
+            order.vertex_target.clear();
+            order.vertex_source.clear();
+        } else {
+            compute_mesh_order(mesh, order);
+        }
+        order.positions_data = mesh.positions.data();
+        order.triangles_data = mesh.triangles.data();
+        order.vertex_count = mesh.positions.size();
+        order.triangle_count = mesh.triangles.size();
+        order.triangles_sample = sample_triangles(mesh.triangles);
+    }
+    if (order.caller_order_is_local) return scene;
+    // The copy, from the caller's arrays as they are now.
+    order.reordered = true;
+    copy_all_but_mesh(scene, order.scene);
+    Mesh& out = order.scene.mesh;
+    gather(mesh.positions, order.vertex_source, out.positions);
+    gather(mesh.colors, order.vertex_source, out.colors);
+    if (needs_computed_normals(scene, options)) {
+        calculate_normals_into(mesh.positions, mesh.triangles, order.normals_scratch, order.normals);
+        gather(order.normals, order.vertex_source, out.normals);
+    } else {
+        gather(mesh.normals, order.vertex_source, out.normals);
+    }
+    out.triangles.resize(mesh.triangles.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.triangles.size(), kGatherBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k) {
+            const Triangle& tri = mesh.triangles[order.triangle_source[k]];
+            out.triangles[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+        }
+    });
+    // Contract version 2's per-triangle attributes follow their triangles.
+    out.texcoords = mesh.texcoords;
+    gather_corner_indices(mesh.texcoord_triangles, order.triangle_source, out.texcoord_triangles);
+    out.file_normals = mesh.file_normals;
+    gather_corner_indices(mesh.file_normal_triangles, order.triangle_source, out.file_normal_triangles);
+    out.materials = mesh.materials;
+    gather(mesh.face_materials, order.triangle_source, out.face_materials);
+    return order.scene;
+}
+
+}  // namespace phongrast::detail

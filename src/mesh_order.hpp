@@ -1,0 +1,115 @@
+// Mesh order (internal header): before a large mesh enters the pipeline it
+// is copied into an order whose memory accesses stay local, whatever order
+// the caller's arrays come in: triangles sorted spatially (by the Morton
+// code of their centroid's cell in a 64^3 grid), vertices renumbered by
+// first use in that order. Set-up,
+// clipping and painter's keys then read neighbouring vertices for
+// neighbouring triangles instead of three random cache lines per triangle.
+//
+// The picture does not change, bit for bit: every per-vertex and
+// per-triangle computation is the same whatever the order (each triangle
+// keeps its corners in their order), and the two things that depend on a
+// triangle's place in the list use its original index: painter's tie-break
+// (equal mean depths are drawn in the caller's order: painter_order()'s
+// tie rank) and the id output (AovPassInput::original_triangle). Computed
+// normals are summed in the caller's order too (they are computed from the
+// caller's mesh, then permuted).
+//
+// What a Renderer keeps: the permutation, computed once per mesh (the
+// expensive part: a spatial sort), and the reordered copy's memory. The
+// copy is rebuilt from the caller's arrays on every frame, so a mesh edited
+// in place between frames is never drawn stale: only the permutation is
+// reused, and any permutation gives the same picture. Whether the
+// permutation is reused is decided by the mesh's identity (the arrays'
+// addresses and sizes and a sample of its triangles); guessing wrong costs
+// speed only, never correctness.
+#ifndef PHONGRAST_SRC_MESH_ORDER_HPP
+#define PHONGRAST_SRC_MESH_ORDER_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "normals_scratch.hpp"
+#include "phongrast/render.hpp"
+
+namespace phongrast::detail {
+
+/// Meshes with fewer triangles are rendered in the caller's order: their
+/// vertex arrays stay in cache, and the copy would cost more than it saves.
+/// A Renderer pays the permutation once per mesh, render() on every call,
+/// so render() starts higher (measured: docs/performance.md, "Mesh order").
+constexpr std::size_t kReorderMinTriangles = 16384;
+constexpr std::size_t kReorderMinTrianglesOneOff = 65536;
+
+/// A mesh whose order already misses the cache less than this, in vertex
+/// cache lines per triangle (local_order_misses()), is rendered as it
+/// comes: a generator's or a tool's well-ordered mesh pays no copy.
+/// Measured on a 72,000-triangle icosphere (tests/test_mesh_order.cpp):
+/// 0.21 in the generator's order and in the spatial one, 1.x with only
+/// the faces shuffled, 2.3 with faces and vertices shuffled.
+constexpr double kReorderMinMissesPerTriangle = 0.6;
+
+/// Overrides both thresholds of triangles (a test or benchmark: 0 reorders
+/// every mesh whose order is not local, SIZE_MAX none, today's path);
+/// returns the previous override, 0 meaning... see reorder_min_triangles().
+std::size_t set_reorder_min_triangles(std::size_t triangles);
+/// The threshold in force: the override when set, else the constant for a
+/// Renderer (`one_off` false) or render() (true).
+std::size_t reorder_min_triangles(bool one_off = false);
+/// Turns the locality test off (true: every mesh over the threshold is
+/// reordered, for tests); returns the previous setting.
+bool set_reorder_always(bool always);
+
+/// Vertex cache lines missed per triangle when the mesh's triangles are
+/// read in its order, in a small direct-mapped model of the cache (4,096
+/// lines of 64 bytes, 24-byte vertices), over up to 16 windows of 8,192
+/// triangles spread over the mesh.
+double local_order_misses(const Mesh& mesh);
+
+/// A mesh's reordering, and the reordered scene of the frame being rendered.
+struct MeshOrder {
+    /// Internal triangle -> the caller's triangle (empty: not reordered).
+    std::vector<std::uint32_t> triangle_source;
+    /// The caller's vertex -> internal vertex, and its inverse.
+    std::vector<std::uint32_t> vertex_target, vertex_source;
+    /// What the permutation was computed for (only the speed depends on it).
+    const void* positions_data = nullptr;
+    const void* triangles_data = nullptr;
+    std::size_t vertex_count = 0, triangle_count = 0;
+    std::uint64_t triangles_sample = 0;
+    /// The caller's order was found local enough: rendered as it comes.
+    bool caller_order_is_local = false;
+    /// This frame renders `scene` (below) rather than the caller's.
+    bool reordered = false;
+
+    /// The caller's index of each triangle the pipeline sees, or null when it sees the caller's mesh.
+    const std::uint32_t* original_triangles() const { return reordered ? triangle_source.data() : nullptr; }
+    /// The caller's scene with the mesh in internal order, rebuilt every frame.
+    Scene scene;
+    NormalsScratch normals_scratch;
+    std::vector<glm::vec3> normals;  ///< computed in the caller's order, before the permutation
+    /// Permutations computed so far (tests: a Renderer computes one per mesh).
+    std::size_t permutations_computed = 0;
+};
+
+/// Whether `scene` may be rendered reordered with `options`: a mesh of at least
+/// reorder_min_triangles(one_off) triangles (a single mesh: a scene of objects is
+/// left as it is), and no back-face culling, whose closedness test sums
+/// per-vertex volumes whose rounding could depend on vertex numbering.
+bool should_reorder(const Scene& scene, const RenderOptions& options, bool one_off);
+
+/// The scene the pipeline renders: `scene` itself when !should_reorder() or
+/// when its order is already local (local_order_misses()), else order.scene, `scene` with its mesh permuted (order.triangle_source
+/// then names each internal triangle's original index; otherwise it is
+/// empty). Reuses order's permutation when the mesh looks like the last one.
+const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, bool one_off,
+                                   MeshOrder& order);
+
+/// The permutation alone, for tests and benchmarks: fills order's
+/// triangle_source, vertex_target and vertex_source for `mesh`.
+void compute_mesh_order(const Mesh& mesh, MeshOrder& order);
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_MESH_ORDER_HPP

@@ -1,0 +1,310 @@
+// Mesh order (src/mesh_order.cpp): a mesh rendered reordered gives the same
+// bits as the same mesh rendered in its own order (the path every mesh below
+// the threshold takes), in every shader and mode, with the depth buffer, and
+// in every extra output; painter's ties keep the caller's order; a Renderer
+// never draws a mesh edited in place from a stale copy.
+#include <algorithm>
+#include <cstring>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "mesh_order.hpp"
+#include "test_meshes.hpp"
+#include "test_render_modes.hpp"
+
+using namespace phongrast;
+using test_render_modes::same_bits;
+
+namespace {
+
+constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
+
+/// Sets the reordering threshold for one scope: 0 reorders every mesh,
+/// whatever its order (the locality test off), kNever none.
+class ReorderThreshold {
+public:
+    explicit ReorderThreshold(std::size_t triangles)
+        : previous_(detail::set_reorder_min_triangles(triangles)),
+          previous_always_(detail::set_reorder_always(triangles != kNever)) {}
+    ~ReorderThreshold() {
+        detail::set_reorder_min_triangles(previous_);
+        detail::set_reorder_always(previous_always_);
+    }
+    ReorderThreshold(const ReorderThreshold&) = delete;
+    ReorderThreshold& operator=(const ReorderThreshold&) = delete;
+
+private:
+    std::size_t previous_;
+    bool previous_always_;
+};
+
+bool same_aovs(const AovPlanes& a, const AovPlanes& b) {
+    const auto same = [](const auto& x, const auto& y) {
+        return x.size() == y.size() && (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
+    };
+    return same(a.depth, b.depth) && same(a.normal, b.normal) && same(a.id, b.id) && same(a.alpha, b.alpha);
+}
+
+/// The mesh with its faces listed in a random order.
+Mesh shuffled_faces(Mesh mesh, unsigned seed) {
+    std::mt19937 random(seed);
+    std::shuffle(mesh.triangles.begin(), mesh.triangles.end(), random);
+    return mesh;
+}
+
+/// The mesh with its vertices renumbered at random (positions, colours and normals move with them).
+Mesh shuffled_vertices(Mesh mesh, unsigned seed) {
+    std::vector<std::uint32_t> target(mesh.positions.size());
+    std::iota(target.begin(), target.end(), 0u);
+    std::mt19937 random(seed);
+    std::shuffle(target.begin(), target.end(), random);
+    Mesh out = mesh;
+    for (std::size_t v = 0; v < target.size(); ++v) {
+        out.positions[target[v]] = mesh.positions[v];
+        if (!mesh.colors.empty()) out.colors[target[v]] = mesh.colors[v];
+        if (!mesh.normals.empty()) out.normals[target[v]] = mesh.normals[v];
+    }
+    for (Triangle& tri : out.triangles) {
+        for (std::uint32_t& index : tri) index = target[index];
+    }
+    return out;
+}
+
+/// Seen from above the plane z = 0, straight down the z axis: every point
+/// of that plane has the same camera depth.
+constexpr glm::dvec3 kHeadOn{0.0, 0.0, 3.2};
+
+/// The mesh framed (about to the image's border: some triangles are
+/// clipped), two lights, no normals (computed).
+Scene sphere_scene(const Mesh& mesh, const glm::dvec3& eye = {0.3, 0.4, 3.2}) {
+    Scene scene;
+    scene.mesh = mesh;
+    scene.camera.eye = eye;
+    scene.camera.lookat = {0.0, 0.0, 0.0};
+    scene.camera.focal = 1.9;
+    scene.image.rows = scene.image.columns = 96;
+    scene.lights = {{{2.0, 3.0, 4.0}, {0.8f, 0.7f, 0.6f}}, {{-3.0, 1.0, 2.0}, {0.3f, 0.4f, 0.5f}}};
+    return scene;
+}
+
+/// Painter's ties decide this picture: 600 small squares of different
+/// colours, all in one plane facing the camera (every triangle's mean depth
+/// is the same), overlapping at random; the square listed last wins each pixel.
+Mesh coplanar_squares() {
+    Mesh mesh;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> place(-0.9, 0.7), hue(0.0, 1.0);
+    for (int k = 0; k < 600; ++k) {
+        const double x = place(random), y = place(random), side = 0.2;
+        const auto first = static_cast<std::uint32_t>(mesh.positions.size());
+        mesh.positions.push_back({x, y, 0.0});
+        mesh.positions.push_back({x + side, y, 0.0});
+        mesh.positions.push_back({x + side, y + side, 0.0});
+        mesh.positions.push_back({x, y + side, 0.0});
+        const glm::vec3 color(float(hue(random)), float(hue(random)), float(hue(random)));
+        for (int i = 0; i < 4; ++i) mesh.colors.push_back(color);
+        mesh.triangles.push_back({first, first + 1, first + 2});
+        mesh.triangles.push_back({first, first + 2, first + 3});
+    }
+    return mesh;
+}
+
+struct Case {
+    std::string name;
+    Mesh mesh;
+    glm::dvec3 eye{0.3, 0.4, 3.2};
+};
+
+std::vector<Case> cases() {
+    const Mesh sphere = test_meshes::icosphere(11, 0.08);
+    const Mesh squares = coplanar_squares();
+    return {
+        {"icosphere, generator's order", sphere},
+        {"icosphere, faces shuffled", shuffled_faces(sphere, 1)},
+        {"icosphere, vertices shuffled", shuffled_vertices(sphere, 2)},
+        {"icosphere, both shuffled", shuffled_vertices(shuffled_faces(sphere, 3), 4)},
+        {"coplanar squares (painter's ties)", squares, kHeadOn},
+        {"coplanar squares, faces shuffled", shuffled_faces(squares, 5), kHeadOn},
+        {"coplanar squares, vertices shuffled", shuffled_vertices(squares, 6), kHeadOn},
+    };
+}
+
+}  // namespace
+
+TEST_CASE("the permutation is a real one: a shuffled mesh is renumbered") {
+    const Mesh mesh = shuffled_vertices(shuffled_faces(test_meshes::icosphere(11, 0.08), 1), 2);
+    detail::MeshOrder order;
+    detail::compute_mesh_order(mesh, order);
+    REQUIRE(order.triangle_source.size() == mesh.triangles.size());
+    REQUIRE(order.vertex_target.size() == mesh.positions.size());
+    std::vector<std::uint32_t> sorted = order.triangle_source;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t t = 0; t < sorted.size(); ++t) REQUIRE(sorted[t] == t);
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) REQUIRE(order.vertex_source[order.vertex_target[v]] == v);
+    std::size_t moved = 0;
+    for (std::size_t t = 0; t < sorted.size(); ++t) moved += order.triangle_source[t] != t;
+    CHECK(moved > mesh.triangles.size() / 2);
+    // The first triangle's vertices are the first three (numbered by first use).
+    const Triangle& first = mesh.triangles[order.triangle_source[0]];
+    for (std::uint32_t index : first) CHECK(order.vertex_target[index] < 3);
+}
+
+TEST_CASE("the locality test tells a generator's order and the spatial one from a shuffled one") {
+    const Mesh sphere = test_meshes::icosphere(60, 0.08);  // 72,000 triangles
+    const double generator = detail::local_order_misses(sphere);
+    const double shuffled = detail::local_order_misses(shuffled_vertices(shuffled_faces(sphere, 11), 12));
+    const double faces_shuffled = detail::local_order_misses(shuffled_faces(sphere, 13));
+    INFO("misses per triangle: generator " << generator << ", shuffled " << shuffled << ", faces shuffled "
+                                           << faces_shuffled);
+    CHECK(generator < detail::kReorderMinMissesPerTriangle);
+    CHECK(shuffled > detail::kReorderMinMissesPerTriangle);
+    CHECK(faces_shuffled > detail::kReorderMinMissesPerTriangle);
+    // The renderer's own order of the shuffled mesh is local again.
+    const Mesh mixed = shuffled_vertices(shuffled_faces(sphere, 11), 12);
+    detail::MeshOrder order;
+    detail::compute_mesh_order(mixed, order);
+    Mesh spatial = mixed;
+    for (std::size_t k = 0; k < mixed.triangles.size(); ++k) {
+        const Triangle& tri = mixed.triangles[order.triangle_source[k]];
+        spatial.triangles[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+    }
+    const double reordered = detail::local_order_misses(spatial);
+    INFO("reordered: " << reordered);
+    CHECK(reordered < detail::kReorderMinMissesPerTriangle);
+    CHECK(detail::local_order_misses(Mesh{}) == 0.0);
+}
+
+TEST_CASE("a reordered mesh renders the same bits in every shader, mode and extra output") {
+    for (const Case& c : cases()) {
+        for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+            for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+                for (Visibility visibility : {Visibility::painter, Visibility::depth_buffer}) {
+                    Scene scene = sphere_scene(c.mesh, c.eye);
+                    scene.shader = shader;
+                    RenderOptions options = mode.options;
+                    options.visibility = visibility;
+                    options.aovs = AovRequest::all();
+                    options.threads = 2;
+                    RenderResult today, reordered;
+                    {
+                        ReorderThreshold never(kNever);
+                        today = render(scene, options);
+                    }
+                    {
+                        ReorderThreshold always(0);
+                        reordered = render(scene, options);
+                    }
+                    INFO(c.name << ", " << to_string(shader) << ", " << mode.name
+                                << (visibility == Visibility::depth_buffer ? ", depth buffer" : ", painter"));
+                    REQUIRE(today.stats.triangles_drawn > 0);
+                    CHECK(same_bits(today.image, reordered.image));
+                    CHECK(same_aovs(today.aovs, reordered.aovs));
+                    CHECK(today.stats.triangles_drawn == reordered.stats.triangles_drawn);
+                    CHECK(today.stats.samples_shaded == reordered.stats.samples_shaded);
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("supersampled and rotated-grid renders of a reordered mesh are the same bits") {
+    const Mesh mesh = shuffled_vertices(shuffled_faces(coplanar_squares(), 8), 9);
+    for (SamplePattern pattern : {SamplePattern::ordered_grid, SamplePattern::rotated_grid}) {
+        Scene scene = sphere_scene(mesh, kHeadOn);
+        scene.shader = Shader::gouraud;
+        RenderOptions options = RenderOptions::exact();
+        options.samples_per_axis = 2;
+        options.sample_pattern = pattern;
+        options.aovs = AovRequest::all();
+        RenderResult today, reordered;
+        {
+            ReorderThreshold never(kNever);
+            today = render(scene, options);
+        }
+        {
+            ReorderThreshold always(0);
+            reordered = render(scene, options);
+        }
+        CHECK(same_bits(today.image, reordered.image));
+        CHECK(same_aovs(today.aovs, reordered.aovs));
+    }
+}
+
+TEST_CASE("the painter's-ties scene depends on the order: the test above would see a wrong tie-break") {
+    // Rendering the squares in another order changes the picture, so equal
+    // pictures above mean the reordered render kept the caller's order.
+    ReorderThreshold never(kNever);
+    Scene scene = sphere_scene(coplanar_squares(), kHeadOn);
+    scene.shader = Shader::flat;
+    const RenderResult listed = render(scene);
+    scene.mesh = shuffled_faces(scene.mesh, 5);
+    const RenderResult shuffled = render(scene);
+    CHECK_FALSE(same_bits(listed.image, shuffled.image));
+}
+
+TEST_CASE("a Renderer never draws a mesh edited in place from a stale copy") {
+    ReorderThreshold always(0);
+    Scene scene = sphere_scene(shuffled_faces(test_meshes::icosphere(11, 0.08), 10));
+    scene.shader = Shader::phong;
+    RenderOptions options = RenderOptions::exact();
+    options.aovs = AovRequest::all();
+    Renderer renderer(options);
+    const auto fresh = [&] {
+        ReorderThreshold never(kNever);
+        return render(scene, options);
+    };
+    RenderResult expected = fresh();
+    CHECK(same_bits(renderer.render(scene).image, expected.image));
+    // Positions moved in place (same arrays, same sizes).
+    for (glm::dvec3& p : scene.mesh.positions) p = p * 0.8 + glm::dvec3(0.1, 0.0, 0.0);
+    expected = fresh();
+    RenderResult got = renderer.render(scene);
+    CHECK(same_bits(got.image, expected.image));
+    CHECK(same_aovs(got.aovs, expected.aovs));
+    // Colours and the triangles' corners edited in place: every triangle turned
+    // around (its corners' order changes the normals), half of them dropped to one point.
+    for (glm::vec3& c : scene.mesh.colors) c = glm::vec3(1.0f) - c;
+    for (std::size_t t = 0; t < scene.mesh.triangles.size(); ++t) {
+        Triangle& tri = scene.mesh.triangles[t];
+        std::swap(tri[1], tri[2]);
+        if (t % 2 == 0) tri[2] = tri[1] = tri[0];
+    }
+    expected = fresh();
+    got = renderer.render(scene);
+    CHECK(same_bits(got.image, expected.image));
+    CHECK(same_aovs(got.aovs, expected.aovs));
+    // Normals given by the caller, then edited in place.
+    scene.mesh.normals = calculate_normals(scene.mesh);
+    CHECK(same_bits(renderer.render(scene).image, fresh().image));
+    for (glm::vec3& n : scene.mesh.normals) n = glm::vec3(n.y, n.z, n.x);
+    CHECK(same_bits(renderer.render(scene).image, fresh().image));
+}
+
+TEST_CASE("the permutation is computed once per mesh, again for another mesh") {
+    ReorderThreshold always(0);
+    Scene scene = sphere_scene(shuffled_faces(test_meshes::icosphere(11, 0.08), 14));
+    const RenderOptions options = RenderOptions::exact();
+    detail::MeshOrder order;
+    const Scene* drawn = &detail::scene_in_render_order(scene, options, false, order);
+    CHECK(drawn == &order.scene);
+    CHECK(order.original_triangles() != nullptr);
+    CHECK(order.permutations_computed == 1);
+    // Same mesh, positions edited in place: the permutation is kept, the copy follows the edit.
+    scene.mesh.positions[0] += glm::dvec3(0.01);
+    detail::scene_in_render_order(scene, options, false, order);
+    CHECK(order.permutations_computed == 1);
+    CHECK(order.scene.mesh.positions[order.vertex_target[0]] == scene.mesh.positions[0]);
+    // Another mesh of the same size: a new permutation.
+    scene.mesh = shuffled_faces(test_meshes::icosphere(11, 0.08), 15);
+    detail::scene_in_render_order(scene, options, false, order);
+    CHECK(order.permutations_computed == 2);
+    // Culling keeps the caller's order, and so the caller's indices.
+    RenderOptions culling = options;
+    culling.back_faces = BackFaces::cull_when_hidden;
+    CHECK(&detail::scene_in_render_order(scene, culling, false, order) == &scene);
+    CHECK(order.original_triangles() == nullptr);
+}
