@@ -2,6 +2,9 @@
 
 #include <cstdio>
 #include <stdexcept>
+#include <string>
+
+#include "phongrast/image.hpp"
 
 namespace phongrast::cli {
 
@@ -58,9 +61,14 @@ std::pair<int, int> parse_size(const std::string& text) {
     int height = 0;
     char rest = 0;
     if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &rest) != 2 || width < 1 || height < 1 ||
-        width > 32768 || height > 32768) {
-        throw std::invalid_argument("--size: expected WxH with whole numbers from 1 to 32768, e.g. 640x480; got '" +
-                                    text + "'");
+        width > kMaxImageSide || height > kMaxImageSide) {
+        throw std::invalid_argument("--size: expected WxH with whole numbers from 1 to " +
+                                    std::to_string(kMaxImageSide) + ", e.g. 640x480; got '" + text + "'");
+    }
+    try {
+        validate_image_size(height, width, "H", "W");  // the library's limit on the pixel count
+    } catch (const std::length_error& error) {
+        throw std::invalid_argument("--size " + text + ": " + error.what());
     }
     return {width, height};
 }

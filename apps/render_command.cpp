@@ -89,6 +89,7 @@ int run_render(const RenderCommand& command) {
     const RenderResult& result = *last;
     clear_progress_bar(show_bar);
     messages.progress_done();
+    if (result.stats.empty_scene) messages.warning("the mesh has no triangles: the image is the background alone");
 
     stop_if_interrupted();
     if (prepared.options.aovs.any() && format == io::ImageFormat::exr) {

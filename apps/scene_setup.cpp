@@ -119,7 +119,7 @@ NormalOptions normal_options(const SceneFlags& flags) {
 void validate_prepared(const PreparedScene& prepared, const std::string& source) {
     try {
         validate_render(prepared.scene, prepared.options);
-    } catch (const std::invalid_argument& error) {
+    } catch (const std::logic_error& error) {  // invalid_argument, or length_error for the image size
         throw std::invalid_argument(source + ": " + error.what());
     }
 }

@@ -11,6 +11,7 @@
 namespace phongrast::io {
 
 Scene frame_mesh(Mesh mesh, int rows, int columns) {
+    validate_image_size(rows, columns, "rows", "columns");
     if (mesh.positions.empty()) throw std::invalid_argument("frame_mesh: the mesh has no vertices");
     glm::dvec3 low = mesh.positions.front();
     glm::dvec3 high = low;

@@ -49,6 +49,7 @@ py::dict stats_to_dict(const RenderStats& stats) {
     for (const RenderCounter& counter : render_counters()) d[counter.name] = stats.*counter.field;
     d["effects"] = to_string(stats.effects);
     d["back_faces_culled"] = stats.back_faces_culled;
+    d["empty_scene"] = stats.empty_scene;
     d["seconds"] = stats.seconds;
     return d;
 }

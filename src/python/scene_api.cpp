@@ -226,8 +226,8 @@ void bind_scene_camera(py::class_<PyScene>& scene) {
                        }, "(H, W): height and width of the image plane in world units.");
     scene.def_property("size", [](const PyScene& s) { return py::make_tuple(s.scene->image.rows, s.scene->image.columns); },
                        [](PyScene& s, std::pair<py::object, py::object> mn) {
-                           s.scene->image.rows = read_int(mn.first, "size[0]", 1, 32768);
-                           s.scene->image.columns = read_int(mn.second, "size[1]", 1, 32768);
+                           s.scene->image.rows = read_int(mn.first, "size[0]", 1, kMaxImageSide);
+                           s.scene->image.columns = read_int(mn.second, "size[1]", 1, kMaxImageSide);
                        }, "(M, N): rows and columns of pixels.");
 }
 

@@ -56,8 +56,8 @@ py::array render_object(const py::object& shader, const py::object& focal, const
     Scene scene;
     scene.shader = read_shader(shader, "shader");
     scene.camera = read_seed_camera(focal, eye, lookat, up, H, W);
-    scene.image.rows = read_int(M, "M", 1, 32768);
-    scene.image.columns = read_int(N, "N", 1, 32768);
+    scene.image.rows = read_int(M, "M", 1, kMaxImageSide);
+    scene.image.columns = read_int(N, "N", 1, kMaxImageSide);
     scene.image.background = glm::vec3(read_vec3(bg_color, "bg_color", true));
     scene.mesh.positions = read_points(verts, "verts", layout);
     if (!vert_colors.is_none()) {
