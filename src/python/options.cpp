@@ -30,7 +30,11 @@ const char* const option_keywords_doc = R"(Rendering keywords:
     overdraw: "auto" (default), "all" or "visible" (speed only; the same picture)
     back_faces: "draw" (default, the contract) or "cull" (closed meshes seen from outside)
     aovs: extra outputs, "depth,normal,id,alpha" (any of them, or "all"); render and
-        Renderer.render then return (image, stats, planes), planes a dict of arrays)";
+        Renderer.render then return (image, stats, planes), planes a dict of arrays
+    progress: a callable taking the fraction done (0 to 1), called about every 20 ms
+        from the rendering thread; returning False cancels (phongrast.RenderCancelled),
+        an exception it raises stops the render and propagates. Ctrl-C stops any
+        render, with or without it, raising KeyboardInterrupt)";
 
 static std::string keyword_text(const py::kwargs& keywords, const char* keyword, const std::string& fallback) {
     if (!keywords.contains(keyword)) return fallback;
@@ -41,7 +45,7 @@ static std::string keyword_text(const py::kwargs& keywords, const char* keyword,
 
 RenderOptions options_from_keywords(const py::kwargs& keywords, const std::string& default_mode) {
     static const char* const known[] = {"mode",     "samples",    "threads", "visibility", "precision",
-                                        "sample_pattern", "overdraw", "back_faces", "aovs"};
+                                        "sample_pattern", "overdraw", "back_faces", "aovs", "progress"};
     for (const auto& item : keywords) {
         const std::string key = py::str(item.first);
         if (std::find(std::begin(known), std::end(known), key) == std::end(known)) {
