@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
+#include "signatures.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/progress.hpp"
 #include "phongrast/version.hpp"
@@ -42,4 +43,5 @@ malformed files raise phongrast.FileError (a ValueError) naming the file.)";
     phongrast::python::bind_seed_functions(module);
     phongrast::python::bind_seed_fill(module);
     phongrast::python::bind_scene_api(module);
+    phongrast::python::add_text_signatures(module);  // last: inspect.signature() for everything above
 }
