@@ -73,5 +73,7 @@ class CMakeBuild(build_ext):
         shutil.copyfile(stubs, stub_package / "__init__.pyi")
 
 
+# packages=[] and py_modules=[]: no automatic discovery (it would take src/ for a src-layout package).
 setup(version=project_version(), ext_modules=[CMakeExtension("phongrast")], cmdclass={"build_ext": CMakeBuild},
+      packages=[], py_modules=[],
       zip_safe=False)
