@@ -37,8 +37,10 @@ void add_scene_flags(CLI::App& command, SceneFlags& flags, const std::string& ou
     command.add_option("--up", flags.up, "Camera up direction x,y,z")->expected(3)->delimiter(',');
     command.add_option("--focal", flags.focal, "Focal distance (world units)")->check(CLI::PositiveNumber);
     command.add_option("--sensor", flags.sensor, "Image plane size H,W (world units)")->expected(2)->delimiter(',');
-    command.add_option("--threads", flags.threads, "Worker threads; 0 = all cores (the picture does not change)")
-        ->check(CLI::NonNegativeNumber)
+    // A range with a small maximum: CLI::NonNegativeNumber's message would print the largest double in full.
+    command.add_option("--threads", flags.threads,
+                       "Worker threads; 0 = all cores, more than the machine has are clamped (the picture does not change)")
+        ->check(CLI::Range(0, 65536))
         ->capture_default_str();
     command.add_option("--samples", flags.samples, "Samples per pixel axis (1 = pixel centres; 4 = 16 samples)")
         ->check(CLI::Range(1, 16))

@@ -66,6 +66,8 @@ std::string choose_output(const std::string& output, const std::string& default_
     if (!folder.empty() && !fs::is_directory(folder, error)) {
         throw io::FileError(path + ": output folder '" + folder.string() + "' does not exist");
     }
+    // Refused now, not after the render, when the rename would fail.
+    if (fs::is_directory(path, error)) throw io::FileError(path + ": is a folder; expected an image file name");
     return path;
 }
 

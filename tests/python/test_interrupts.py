@@ -112,3 +112,13 @@ def test_an_exception_in_the_progress_callable_stops_the_render_and_propagates()
         renderer.render(small_scene())
     with pytest.raises(TypeError, match="progress"):
         phongrast.render(small_scene(), progress=3)
+
+
+def test_render_object_takes_progress_too():
+    seen = []
+    image = phongrast.render_object("phong", 1.0, [0, 0, 3], [0, 0, 0], [0, 1, 0], [1, 1, 1], 8, 8, 1.0, 1.0,
+                                    [[0, 0, 0], [1, 0, 0], [0, 1, 0]], None, [[0, 1, 2]],
+                                    phongrast.PhongMaterial(0.1, 0.8, 1.0, 10),
+                                    [phongrast.PointLight([1, 2, 3], 1.0)], 0.2, "full", progress=seen.append)
+    assert image.shape == (8, 8, 3)
+    assert seen and seen[-1] == 1.0
