@@ -27,9 +27,15 @@ std::string vector_text(const glm::vec3& v) {
     return text;
 }
 
-void require_non_negative(const glm::vec3& value, const std::string& member, const char* why) {
+/// `index` >= 0 names element `index` of `member` ("lights[2].intensity"
+/// from "lights", 2, ".intensity"); the name is only built for the message,
+/// so a valid scene allocates nothing here (Renderer's frames allocate nothing).
+void require_non_negative(const glm::vec3& value, const char* member, const char* why, long index = -1,
+                          const char* field = "") {
     if (value.x < 0.0f || value.y < 0.0f || value.z < 0.0f) {
-        throw std::invalid_argument(member + ": expected numbers of at least 0 (" + why + "), got " +
+        const std::string name =
+            index < 0 ? std::string(member) : std::string(member) + "[" + std::to_string(index) + "]" + field;
+        throw std::invalid_argument(name + ": expected numbers of at least 0 (" + why + "), got " +
                                     vector_text(value));
     }
 }
@@ -79,8 +85,8 @@ void validate_non_negative_light(const Scene& scene) {
     require_non_negative(scene.material.ks, "material.ks", reflect);
     require_non_negative(scene.ambient, "ambient", "a light adds light; there are no light sinks");
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        require_non_negative(scene.lights[i].intensity, "lights[" + std::to_string(i) + "].intensity",
-                             "a light adds light; there are no light sinks");
+        require_non_negative(scene.lights[i].intensity, "lights", "a light adds light; there are no light sinks",
+                             static_cast<long>(i), ".intensity");
     }
 }
 
