@@ -75,10 +75,11 @@ struct RendererState final : PassRenderer {
         reset_aov_planes(rendered.image.rows, rendered.image.columns, aov_planes, result.aovs);
         result.stats = RenderStats{};
         result.stats.triangles_in = rendered.mesh.triangles.size();
-        result.stats.empty_scene = result.stats.triangles_in == 0;
         arena_for(options.threads).execute([&] { render_and_resolve(rendered, options, *this, resolve_images, result); });
         scene = nullptr;
         progress = nullptr;
+        // After the passes: a rotated grid's resolve rebuilds the statistics from its passes'.
+        result.stats.empty_scene = result.stats.triangles_in == 0;
         if (aov_planes.any()) finish_aovs(options.aovs, factor * factor, result.aovs);
         monitor.finish();
         result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -206,6 +206,14 @@ TEST_CASE("an empty mesh is reported in RenderStats::empty_scene, and renders th
     for (const glm::vec3& p : result.image.pixels) CHECK(p == scene.image.background);
     scene.mesh = Mesh{};
     CHECK(render(scene).stats.empty_scene);
+    // Found by fuzz_api: a rotated grid's resolve rebuilt the statistics and lost the flag.
+    for (SamplePattern pattern : {SamplePattern::ordered_grid, SamplePattern::rotated_grid}) {
+        RenderOptions options = RenderOptions::exact();
+        options.samples_per_axis = 3;
+        options.sample_pattern = pattern;
+        CHECK(render(scene, options).stats.empty_scene);
+        CHECK_FALSE(render(triangle_scene(), options).stats.empty_scene);
+    }
 }
 
 TEST_CASE("threads above the hardware's are clamped and draw the same picture") {
