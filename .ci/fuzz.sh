@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/) with clang, AddressSanitizer and
 # UndefinedBehaviorSanitizer in build/fuzz, and runs each for a bounded time
-# from its seed corpus in fuzz/corpus/<target>/. A crash leaves its input in
+# from its seed corpus in fuzz/corpus/<target>/ (fuzz_api: the public C++
+# API with scenes built in memory from the bytes, no file). A crash leaves its input in
 # build/fuzz/findings/ and makes this script fail; turn it into a regression
 # test (tests/test_fuzz_regressions.cpp, and the input into fuzz/corpus/).
 # The runs are reproducible: a fixed seed, a fixed number of inputs and a
@@ -26,10 +27,10 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$sanitizers $coverage" \
   -DPHONGRAST_BUILD_FUZZERS=ON -DPHONGRAST_BUILD_IO=ON -DPHONGRAST_BUILD_APPS=OFF \
   -DPHONGRAST_BUILD_TESTS=OFF -DPHONGRAST_INSTALL=OFF -DPHONGRAST_WERROR=ON
-cmake --build "$build" -j2 --target fuzz_obj fuzz_ply fuzz_stl fuzz_gltf fuzz_scene
+cmake --build "$build" -j2 --target fuzz_obj fuzz_ply fuzz_stl fuzz_gltf fuzz_scene fuzz_api
 
 mkdir -p "$build/findings"
-for target in fuzz_obj fuzz_ply fuzz_stl fuzz_gltf fuzz_scene; do
+for target in fuzz_obj fuzz_ply fuzz_stl fuzz_gltf fuzz_scene fuzz_api; do
   name="${target#fuzz_}"
   # New inputs go to a scratch corpus so the repository's seeds stay as they are.
   work="$build/corpus/$name"

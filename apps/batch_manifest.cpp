@@ -121,8 +121,9 @@ JobSettings read_settings(const LineReader& reader, const JobSettings& defaults)
     try {
         if (!settings.size.empty()) parse_size(settings.size);
     } catch (const std::invalid_argument&) {
-        reader.fail("size", "expected \"WxH\" with whole numbers from 1 to 32768, e.g. \"640x480\"; got \"" +
-                                settings.size + "\"");
+        reader.fail("size", "expected \"WxH\" with whole numbers from 1 to " + std::to_string(kMaxImageSide) +
+                                " and at most " + std::to_string(kMaxImagePixels) +
+                                " pixels in all, e.g. \"640x480\"; got \"" + settings.size + "\"");
     }
     for (const auto& [key, name] : settings.options) {
         const NamedOption& option = named_option(key);

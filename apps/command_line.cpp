@@ -2,6 +2,9 @@
 
 #include <cstdio>
 #include <stdexcept>
+#include <string>
+
+#include "phongrast/image.hpp"
 
 #include "phongrast/option_names.hpp"
 
@@ -30,8 +33,10 @@ void add_scene_flags(CLI::App& command, SceneFlags& flags, const std::string& ou
     command.add_option("--up", flags.up, "Camera up direction x,y,z")->expected(3)->delimiter(',');
     command.add_option("--focal", flags.focal, "Focal distance (world units)")->check(CLI::PositiveNumber);
     command.add_option("--sensor", flags.sensor, "Image plane size H,W (world units)")->expected(2)->delimiter(',');
-    command.add_option("--threads", flags.threads, "Worker threads; 0 = all cores (the picture does not change)")
-        ->check(CLI::NonNegativeNumber)
+    // A range with a small maximum: CLI::NonNegativeNumber's message would print the largest double in full.
+    command.add_option("--threads", flags.threads,
+                       "Worker threads; 0 = all cores, more than the machine has are clamped (the picture does not change)")
+        ->check(CLI::Range(0, 65536))
         ->capture_default_str();
     command.add_option("--samples", flags.samples, "Samples per pixel axis (1 = pixel centres; 4 = 16 samples)")
         ->check(CLI::Range(1, 16))
@@ -54,9 +59,14 @@ std::pair<int, int> parse_size(const std::string& text) {
     int height = 0;
     char rest = 0;
     if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &rest) != 2 || width < 1 || height < 1 ||
-        width > 32768 || height > 32768) {
-        throw std::invalid_argument("--size: expected WxH with whole numbers from 1 to 32768, e.g. 640x480; got '" +
-                                    text + "'");
+        width > kMaxImageSide || height > kMaxImageSide) {
+        throw std::invalid_argument("--size: expected WxH with whole numbers from 1 to " +
+                                    std::to_string(kMaxImageSide) + ", e.g. 640x480; got '" + text + "'");
+    }
+    try {
+        validate_image_size(height, width, "H", "W");  // the library's limit on the pixel count
+    } catch (const std::length_error& error) {
+        throw std::invalid_argument("--size " + text + ": " + error.what());
     }
     return {width, height};
 }

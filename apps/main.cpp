@@ -59,7 +59,9 @@ int main(int argc, char** argv) {
     } catch (const phongrast::io::FileError& error) {
         std::cerr << "phongrast: error: " << error.what() << '\n';
         return 2;
-    } catch (const std::invalid_argument& error) {
+    } catch (const std::logic_error& error) {
+        // invalid_argument, out_of_range, length_error: the library refusing
+        // what it was given (a value, an index, a size), never a crash.
         std::cerr << "phongrast: error: " << error.what() << '\n';
         return 2;
     } catch (const std::exception& error) {

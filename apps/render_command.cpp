@@ -28,7 +28,8 @@ void add_render_command(CLI::App& app, RenderCommand& command) {
         "Render a scene file or a mesh to PNG (8-bit, clamped, no gamma) or EXR (linear float). "
         "With no input, renders the default scene to ./default.png.");
     add_scene_flags(*render, command.scene,
-                    "Output image, .png or .exr. Default: NAME.png in the current folder, NAME being the input's");
+                    "Output image, .png or .exr. Default: NAME.png (NAME.exr with --aov) in the current folder, "
+                    "NAME being the input file's name without its extension (default for no input)");
     render->add_option("--repeat", command.repeat,
                        "Render K times after one warm-up and print the median, minimum and maximum render time "
                        "(loading and writing excluded)")
@@ -46,7 +47,9 @@ void add_render_command(CLI::App& app, RenderCommand& command) {
 int run_render(const RenderCommand& command) {
     const Messages messages(command.scene.quiet);
     PreparedScene prepared = prepare_scene(command.scene, messages);
-    const std::string output = choose_output(command.scene.output, prepared.name + ".png");
+    // Extra outputs only fit an EXR: without -o they go to NAME.exr.
+    const std::string output =
+        choose_output(command.scene.output, prepared.name + (command.aovs.empty() ? ".png" : ".exr"));
     const io::ImageFormat format = io::image_format_for(output);
     if (!command.aovs.empty()) {
         try {
@@ -90,6 +93,7 @@ int run_render(const RenderCommand& command) {
     const RenderResult& result = *last;
     clear_progress_bar(show_bar);
     messages.progress_done();
+    if (result.stats.empty_scene) messages.warning("the mesh has no triangles: the image is the background alone");
 
     stop_if_interrupted();
     io::ImageWriteOptions image_options;

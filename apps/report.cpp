@@ -99,6 +99,7 @@ std::string stats_json(const Timing& timing, const RenderStats& stats, const Sce
     for (const RenderCounter& counter : render_counters()) counts[counter.name] = stats.*counter.field;
     counts["effects"] = to_string(stats.effects);
     counts["back_faces_culled"] = stats.back_faces_culled;
+    counts["empty_scene"] = stats.empty_scene;
     counts["seconds"] = stats.seconds;
     return document.dump(2) + "\n";
 }

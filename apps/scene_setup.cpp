@@ -51,6 +51,8 @@ std::string choose_output(const std::string& output, const std::string& default_
     if (!folder.empty() && !fs::is_directory(folder, error)) {
         throw io::FileError(path + ": output folder '" + folder.string() + "' does not exist");
     }
+    // Refused now, not after the render, when the rename would fail.
+    if (fs::is_directory(path, error)) throw io::FileError(path + ": is a folder; expected an image file name");
     return path;
 }
 
@@ -92,7 +94,7 @@ NormalOptions normal_options(const SceneFlags& flags) {
 void validate_prepared(const PreparedScene& prepared, const std::string& source) {
     try {
         validate_render(prepared.scene, prepared.options);
-    } catch (const std::invalid_argument& error) {
+    } catch (const std::logic_error& error) {  // invalid_argument, or length_error for the image size
         throw std::invalid_argument(source + ": " + error.what());
     }
 }

@@ -41,8 +41,8 @@ ProjectedPoint CameraFrame::project(const glm::dvec3& point_world) const {
 
 CameraFrame make_camera_frame(const Camera& camera, int rows, int columns) {
     detail::validate_camera(camera);
-    if (rows < 1) throw std::invalid_argument("image.height: expected at least 1 row");
-    if (columns < 1) throw std::invalid_argument("image.width: expected at least 1 column");
+    if (rows < 1) throw std::invalid_argument("image.rows: expected at least 1 row, got " + std::to_string(rows));
+    if (columns < 1) throw std::invalid_argument("image.columns: expected at least 1 column, got " + std::to_string(columns));
 
     const glm::dvec3 view = camera.lookat - camera.eye;
     const double view_length = glm::length(view);

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "api_checks.hpp"
 #include "finite.hpp"
 #include "normals_scratch.hpp"
 #include "phongrast/lighting.hpp"
@@ -94,10 +95,26 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
     });
 }
 
+bool has_zero_normal(const std::vector<glm::vec3>& normals) {
+    for (const glm::vec3& normal : normals) {
+        if (normal == glm::vec3(0.0f)) return true;
+    }
+    return false;
+}
+
+void keep_given_normals(const std::vector<glm::vec3>& given, std::vector<glm::vec3>& computed) {
+    for (std::size_t i = 0; i < given.size(); ++i) {
+        if (given[i] != glm::vec3(0.0f)) computed[i] = given[i];
+    }
+}
+
 }  // namespace detail
 
 std::vector<glm::vec3> calculate_normals(const std::vector<glm::dvec3>& positions,
                                          const std::vector<Triangle>& triangles) {
+    // Public entry: the indices come from the caller, unchecked (the renderer's
+    // own calls come after validate_mesh).
+    detail::validate_triangle_indices(triangles, positions.size(), "triangles");
     detail::NormalsScratch scratch;
     std::vector<glm::vec3> normals;
     detail::calculate_normals_into(positions, triangles, scratch, normals);

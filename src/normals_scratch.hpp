@@ -28,6 +28,12 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
                             NormalsScratch& scratch, std::vector<glm::vec3>& normals,
                             const std::function<void()>& poll = nullptr);
 
+/// Whether some user normal (Mesh::normals) is exactly zero: "no normal here".
+bool has_zero_normal(const std::vector<glm::vec3>& normals);
+/// computed[i] = given[i] wherever given[i] is not zero: a zero user normal
+/// takes the computed one (as a zero file normal does in the contract).
+void keep_given_normals(const std::vector<glm::vec3>& given, std::vector<glm::vec3>& computed);
+
 }  // namespace phongrast::detail
 
 #endif  // PHONGRAST_SRC_NORMALS_SCRATCH_HPP

@@ -51,8 +51,8 @@ namespace phongrast::detail {
 constexpr int kSubpixelBits = 8;
 constexpr std::int64_t kSubpixelScale = std::int64_t(1) << kSubpixelBits;
 constexpr std::int64_t kHalfPixel = kSubpixelScale / 2;
-/// Largest image side (after supersampling) the fixed-point budget allows.
-constexpr int kMaxImageSide = 1 << 19;
+/// Largest image side in samples (kMaxImageSide pixels x 16 samples) the fixed-point budget allows.
+constexpr int kMaxSampleSide = 1 << 19;
 /// Geometry is clipped to this many pixels beyond each image border.
 constexpr double kGuardBandPixels = double(1 << 18);
 constexpr std::int64_t kMaxSnappedMagnitude = std::int64_t(1) << 28;

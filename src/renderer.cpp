@@ -1,12 +1,14 @@
 // The public entry points: Renderer (a render pass's memory and a thread
 // arena per thread count, kept from frame to frame), render() and
 // render_object().
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 #include "aov_pass.hpp"
@@ -40,7 +42,11 @@ struct RendererState final : PassRenderer {
     int passes = 1, passes_done = 0;       ///< render passes of this frame (rotated grid: one per sample)
 
     /// One arena per thread count asked for, kept: switching thread counts between frames allocates nothing either.
-    tbb::task_arena& arena_for(int threads) {
+    tbb::task_arena& arena_for(int asked) {
+        // More threads than the machine runs at once would only make oneTBB
+        // print a warning and use fewer: clamp quietly (the picture does not
+        // depend on the count).
+        const int threads = std::min(asked, tbb::info::default_concurrency());
         for (auto& [count, arena] : arenas) {
             if (count == threads) return *arena;
         }
@@ -95,6 +101,8 @@ struct RendererState final : PassRenderer {
         scene = nullptr;
         assembled = nullptr;
         progress = nullptr;
+        // After the passes: a rotated grid's resolve rebuilds the statistics from its passes'.
+        result.stats.empty_scene = result.stats.triangles_in == 0;
         if (aov_planes.any()) finish_aovs(options.aovs, factor * factor, result.aovs);
         monitor.finish();
         result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -110,12 +118,26 @@ Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
-const RenderOptions& Renderer::options() const { return state_->options; }
-void Renderer::set_options(const RenderOptions& options) { state_->options = options; }
+// A moved-from Renderer has no state: it works again as a new Renderer()
+// (exact options) would, rather than dereferencing nothing.
+detail::RendererState& Renderer::state() {
+    if (!state_) {
+        state_ = std::make_unique<detail::RendererState>();
+        state_->options = RenderOptions::exact();
+    }
+    return *state_;
+}
+
+const RenderOptions& Renderer::options() const {
+    static const RenderOptions moved_from = RenderOptions::exact();
+    return state_ ? state_->options : moved_from;
+}
+void Renderer::set_options(const RenderOptions& options) { state().options = options; }
 
 const RenderResult& Renderer::render(const Scene& scene) {
-    state_->render(scene);
-    return state_->result;
+    detail::RendererState& current = state();
+    current.render(scene);
+    return current.result;
 }
 
 void validate_render(const Scene& scene, const RenderOptions& options) {

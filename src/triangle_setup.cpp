@@ -306,7 +306,7 @@ template <typename Real>
 void record_drawn(const std::vector<DrawTriangle<Real>>& out, std::size_t first, std::size_t chunk,
                   std::uint64_t key, std::vector<DrawnTriangle>& drawn, std::vector<std::uint64_t>& keys) {
     const std::size_t count = out.size() - first;
-    // Bands fit 16 bits: images are at most kMaxImageSide = 2^19 samples high.
+    // Bands fit 16 bits: images are at most kMaxSampleSide = 2^19 samples high.
     drawn.push_back(count == 1 ? DrawnTriangle::one(chunk, first, out[first].coverage.row_min / kBandRows,
                                                     out[first].coverage.row_max / kBandRows)
                                : DrawnTriangle::several(chunk, first, static_cast<int>(count)));

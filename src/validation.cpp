@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include "api_checks.hpp"
 #include "finite.hpp"
 #include "raster.hpp"
 #include "triangle_setup.hpp"
@@ -60,25 +61,6 @@ void validate_material_and_lights(const Scene& scene) {
         if (!all_finite(scene.lights[i].position) || !all_finite(scene.lights[i].intensity)) {
             throw std::invalid_argument("lights[" + std::to_string(i) + "]: expected finite position and intensity");
         }
-    }
-}
-
-void validate_options_and_size(const Scene& scene, const RenderOptions& options) {
-    if (options.samples_per_axis < 1 || options.samples_per_axis > 16) {
-        throw std::invalid_argument("samples_per_axis: expected 1 to 16, got " +
-                                    std::to_string(options.samples_per_axis));
-    }
-    if (options.threads < 0) throw std::invalid_argument("threads: expected 0 (all cores) or more");
-    const int factor = options.samples_per_axis;
-    const long long sample_rows = static_cast<long long>(scene.image.rows) * factor;
-    const long long sample_columns = static_cast<long long>(scene.image.columns) * factor;
-    if (scene.image.rows < 1 || sample_rows > kMaxImageSide) {
-        throw std::invalid_argument("image.height: expected 1 to " + std::to_string(kMaxImageSide / factor) +
-                                    " rows, got " + std::to_string(scene.image.rows));
-    }
-    if (scene.image.columns < 1 || sample_columns > kMaxImageSide) {
-        throw std::invalid_argument("image.width: expected 1 to " + std::to_string(kMaxImageSide / factor) +
-                                    " columns, got " + std::to_string(scene.image.columns));
     }
 }
 
@@ -191,17 +173,22 @@ void validate_camera(const Camera& camera) {
     if (!all_finite(camera.lookat)) throw std::invalid_argument("camera.lookat: expected finite numbers");
     if (!all_finite(camera.up)) throw std::invalid_argument("camera.up: expected finite numbers");
     require_positive_finite(camera.focal, "focal");
-    require_positive_finite(camera.sensor_height, "sensor[0] (height)");
-    require_positive_finite(camera.sensor_width, "sensor[1] (width)");
+    require_positive_finite(camera.sensor_height, "sensor_height");
+    require_positive_finite(camera.sensor_width, "sensor_width");
 }
 
 void validate_render_request(const Scene& scene, const RenderOptions& options) {
+    // api_checks.cpp: the caller's enums, sizes, signs and normals.
+    validate_option_values(options);
+    validate_scene_enums(scene);
     validate_material_and_lights(scene);
+    validate_non_negative_light(scene);
     const LitBound bound = lit_bound(scene);
     validate_mesh(scene.mesh, colour_limit(bound, scene.mesh.colors.empty()), [&](const glm::vec3& colour) {
         return largest(glm::abs(glm::dvec3(colour)) * bound.per_colour + bound.fixed);
     });
-    validate_options_and_size(scene, options);
+    validate_user_normals(scene.mesh);
+    validate_image_request(scene.image, options);
     validate_camera(scene.camera);
 }
 

@@ -51,12 +51,15 @@ template <typename Real>
 void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, VertexStageMemory<Real>& memory,
                         TransformedVertices<Real>& out, ProgressMonitor& progress) {
     const std::size_t count = mesh.positions.size();
-    if (need_normals && mesh.normals.empty()) {
+    // A zero user normal means "compute this one" (docs/robustness.md).
+    const bool fill_in = need_normals && !mesh.normals.empty() && has_zero_normal(mesh.normals);
+    if (need_normals && (mesh.normals.empty() || fill_in)) {
         progress.begin_stage(0.0, 0.05, 1);
         calculate_normals_into(mesh.positions, mesh.triangles, memory.normals_scratch, memory.normals,
                                progress.poll_function());
+        if (fill_in) keep_given_normals(mesh.normals, memory.normals);
     }
-    const std::vector<glm::vec3>& normals = mesh.normals.empty() ? memory.normals : mesh.normals;
+    const std::vector<glm::vec3>& normals = mesh.normals.empty() || fill_in ? memory.normals : mesh.normals;
     out.screen.resize(count);
     out.varyings.resize(count);
     const CameraFrame& frame = view.frame;

@@ -101,6 +101,6 @@ TEST_CASE("invalid cameras are rejected with the field named") {
         CHECK_THROWS_WITH(make_camera_frame(camera, 10, 10), Catch::Contains("camera.eye"));
     }
     SECTION("no pixels") {
-        CHECK_THROWS_WITH(make_camera_frame(camera, 0, 10), Catch::Contains("image.height"));
+        CHECK_THROWS_WITH(make_camera_frame(camera, 0, 10), Catch::Contains("image.rows"));
     }
 }

@@ -10,6 +10,8 @@
 #include "phongrast/io/auto_scene.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
+#include "phongrast/io/aov_file.hpp"
+#include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/sheet.hpp"
 
 using namespace phongrast;
@@ -106,4 +108,40 @@ TEST_CASE("automatic framing: every vertex inside the image with a margin") {
     }
     CHECK(nearest_edge > 0.03 * 300);   // a margin on every side
     CHECK(nearest_edge < 0.06 * 400);   // and tight: the mesh fills the frame on one axis
+}
+
+TEST_CASE("write_image refuses a pixel buffer that disagrees with rows x columns, and a size past the limit, "
+          "before touching the file") {
+    TemporaryFolder folder;
+    const std::string path = folder.write("keep.png", "old contents");
+    Image short_buffer = test_pattern();
+    short_buffer.pixels.resize(short_buffer.pixels.size() / 2);
+    CHECK_THROWS_AS(io::write_image(short_buffer, path), std::invalid_argument);
+    CHECK_THROWS_WITH(io::write_image(short_buffer, path),
+                      Contains("image.pixels.size()") && Contains("image.rows * image.columns"));
+    Image long_buffer = test_pattern();
+    long_buffer.pixels.push_back(glm::vec3(1.0f));
+    CHECK_THROWS_AS(io::write_image(long_buffer, folder.file("x.exr")), std::invalid_argument);
+    Image huge;  // the size fields alone: the check comes before any pixel is read
+    huge.rows = 100000;
+    huge.columns = 100000;
+    CHECK_THROWS_AS(io::write_image(huge, path), std::length_error);
+    CHECK_THROWS_WITH(io::write_image(huge, path), Contains("100000 x 100000") && Contains("GiB"));
+    CHECK_THROWS_AS(io::write_exr_with_aovs(short_buffer, AovPlanes{}, folder.file("y.exr")), std::invalid_argument);
+    std::vector<io::SheetCell> cells = {{short_buffer, "short"}};
+    CHECK_THROWS_AS(io::compose_sheet(cells, 1), std::invalid_argument);
+    CHECK(contents(path) == "old contents");
+    CHECK(folder.entry_count() == 1);
+}
+
+TEST_CASE("the mesh writers refuse an index past the vertices (std::out_of_range), writing nothing") {
+    TemporaryFolder folder;
+    Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    CHECK_THROWS_AS(io::write_stl(mesh, folder.file("m.stl")), std::out_of_range);
+    CHECK_THROWS_WITH(io::write_stl(mesh, folder.file("m.stl")), Contains("mesh.triangles[1][2] = 3"));
+    CHECK_THROWS_AS(io::write_glb(mesh, folder.file("m.glb")), std::out_of_range);
+    CHECK_THROWS_AS(io::write_ply(mesh, folder.file("m.ply")), std::out_of_range);
+    CHECK(folder.entry_count() == 0);
 }

@@ -294,6 +294,6 @@ TEST_CASE("invalid scenes are rejected with the field named") {
     }
     SECTION("zero-size image") {
         scene.image.columns = 0;
-        CHECK_THROWS_WITH(render(scene), Catch::Contains("image.width"));
+        CHECK_THROWS_WITH(render(scene), Catch::Contains("image.columns"));
     }
 }

@@ -28,7 +28,9 @@ struct Mesh {
     std::vector<glm::vec3> colors;
     /// Counter-clockwise seen from outside gives outward right-hand normals.
     std::vector<Triangle> triangles;
-    /// Unit normal per vertex; empty means "compute with calculate_normals".
+    /// Normal per vertex; empty means "compute with calculate_normals". Need
+    /// not be unit length (the renderer normalises); an exactly zero one takes
+    /// the computed normal; a non-finite one is an error (std::invalid_argument).
     std::vector<glm::vec3> normals;
 
     // What contract version 2 reads from mesh files besides the above. All
@@ -64,6 +66,8 @@ struct Mesh {
 /// takes the unit normal of its largest adjacent non-degenerate face; a vertex
 /// with no such face (unreferenced, or only zero-area faces) gets the zero
 /// vector, which the renderer lights with the ambient term only.
+/// Throws std::out_of_range naming the triangle and corner when an index is
+/// not below positions.size().
 std::vector<glm::vec3> calculate_normals(const std::vector<glm::dvec3>& positions,
                                          const std::vector<Triangle>& triangles);
 std::vector<glm::vec3> calculate_normals(const Mesh& mesh);

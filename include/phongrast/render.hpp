@@ -95,7 +95,8 @@ struct RenderOptions {
     int samples_per_axis = 1;
     /// Placement of those samples; ignored when samples_per_axis is 1.
     SamplePattern sample_pattern = SamplePattern::ordered_grid;
-    /// Worker threads; 0 uses every core. The image does not depend on it.
+    /// Worker threads; 0 uses every core, more than the machine has are
+    /// clamped to that (quietly). The image does not depend on it.
     int threads = 0;
     /// Off by default in both presets: the contract paints every triangle, and culling
     /// changes the pixels where painter's order shows a back face over a front face.
@@ -212,10 +213,14 @@ struct RenderStats {
     std::uint64_t normal_interpolations = 0;  ///< samples where a normal was interpolated and renormalised
     EffectSet effects;                        ///< what was simulated
     bool back_faces_culled = false;           ///< the mesh was found closed with the eye outside, and culled
+    /// The scene has no triangles at all (no vertices, or vertices without
+    /// triangles): the image is the background alone. Not an error; the
+    /// phongrast command warns.
+    bool empty_scene = false;
     double seconds = 0.0;                    ///< wall time of the whole render
 
     /// Adds every counter and the seconds of `other` (a sum over several
-    /// renders); effects and back_faces_culled stay this one's.
+    /// renders); effects, back_faces_culled and empty_scene stay this one's.
     RenderStats& operator+=(const RenderStats& other);
 };
 
@@ -237,9 +242,12 @@ struct RenderResult {
     AovPlanes aovs;  ///< the planes RenderOptions::aovs asked for, at the image's size
 };
 
-/// Renders a scene. Throws std::invalid_argument for an invalid camera, image
-/// size or mesh, or lit values that could pass 1e30 (the message names the
-/// field), and RenderCancelled when the progress callback asks to stop.
+/// Renders a scene. Throws std::invalid_argument for an invalid camera, mesh,
+/// option or enum value, a negative coefficient or intensity, a non-finite
+/// value, or lit values that could pass 1e30; std::length_error for an image
+/// (or its samples) past the size limit (image.hpp); each message names the
+/// C++ member (docs/robustness.md lists every case). RenderCancelled when the
+/// progress callback asks to stop.
 RenderResult render(const Scene& scene, const RenderOptions& options = RenderOptions::exact());
 
 /// The checks render() makes before drawing, alone: throws what render()
@@ -270,10 +278,12 @@ public:
     void set_options(const RenderOptions& options);
 
     /// Renders `scene`. The result stays valid until the next call; copy it to keep it.
-    /// Throws like render().
+    /// Throws like render(). A moved-from Renderer works again like a new
+    /// Renderer() (exact options).
     const RenderResult& render(const Scene& scene);
 
 private:
+    detail::RendererState& state();
     std::unique_ptr<detail::RendererState> state_;
 };
 

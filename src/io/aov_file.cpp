@@ -31,6 +31,7 @@ void require_plane_size(std::size_t size, const Image& image, const std::string&
 void write_exr_with_aovs(const Image& image, const AovPlanes& aovs, const std::string& path) {
     require_format(path, ImageFormat::exr, "expected a file name ending in .exr for the extra outputs");
     if (image.rows < 1 || image.columns < 1) throw FileError(path + ": cannot write an empty image");
+    validate_image(image);  // pixels.size() == rows * columns, within the size limit
     require_plane_size(aovs.alpha.size(), image, path, "alpha");
     require_plane_size(aovs.depth.size(), image, path, "depth");
     require_plane_size(aovs.normal.size(), image, path, "normal");
@@ -126,6 +127,7 @@ void write_png_with_alpha(const Image& image, const std::vector<float>& alpha, c
                           const std::string& path, const ImageWriteOptions& options) {
     require_format(path, ImageFormat::png, "expected a file name ending in .png for a transparent background");
     if (image.rows < 1 || image.columns < 1) throw FileError(path + ": cannot write an empty image");
+    validate_image(image);  // pixels.size() == rows * columns, within the size limit
     if (alpha.size() != image.pixels.size()) {
         throw FileError(path + ": the alpha plane has " + std::to_string(alpha.size()) + " values for " +
                         std::to_string(image.pixels.size()) + " pixels");

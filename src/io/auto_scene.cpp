@@ -71,6 +71,7 @@ void frame_points(const std::vector<glm::dvec3>& points, int rows, int columns, 
 }  // namespace
 
 Scene frame_mesh(Mesh mesh, int rows, int columns) {
+    validate_image_size(rows, columns, "rows", "columns");
     if (mesh.positions.empty()) throw std::invalid_argument("frame_mesh: the mesh has no vertices");
     Scene scene;
     frame_points(mesh.positions, rows, columns, scene);
@@ -81,6 +82,7 @@ Scene frame_mesh(Mesh mesh, int rows, int columns) {
 }
 
 void frame_scene(Scene& scene, int rows, int columns) {
+    validate_image_size(rows, columns, "rows", "columns");
     std::vector<glm::dvec3> points = scene.mesh.positions;
     for (const SceneObject& object : scene.objects) {
         for (const glm::dvec3& p : object.mesh->positions) {

@@ -153,8 +153,13 @@ ImageFormat image_format_for(const std::string& path) {
 void write_image(const Image& image, const std::string& path) { write_image(image, path, ImageWriteOptions{}); }
 
 void write_image(const Image& image, const std::string& path, const ImageWriteOptions& options) {
-    const ImageFormat format = image_format_for(path);
+    // The caller's image first, apart from the encoding: an empty one is a
+    // FileError as before; a size past the limit or a pixel buffer that
+    // disagrees with rows x columns is the caller's mistake (invalid_argument,
+    // length_error), refused before any file is touched.
     if (image.rows < 1 || image.columns < 1) throw FileError(path + ": cannot write an empty image");
+    validate_image(image);
+    const ImageFormat format = image_format_for(path);
     if (options.png_bit_depth != 8 && options.png_bit_depth != 16) {
         throw FileError(path + ": PNG bit depth " + std::to_string(options.png_bit_depth) + "; expected 8 or 16");
     }

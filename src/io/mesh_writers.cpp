@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -34,6 +36,22 @@ void write_bytes(const std::string& path, const std::string& bytes) {
     });
 }
 
+/// The writers read positions through the triangles' indices (STL, glTF
+/// bounds) or write them for a reader to follow: an index past the vertices
+/// is the caller's mistake, refused before anything is written.
+void require_valid_indices(const Mesh& mesh) {
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        for (std::size_t corner = 0; corner < 3; ++corner) {
+            if (mesh.triangles[t][corner] >= mesh.positions.size()) {
+                throw std::out_of_range("mesh.triangles[" + std::to_string(t) + "][" + std::to_string(corner) +
+                                        "] = " + std::to_string(mesh.triangles[t][corner]) +
+                                        ": expected a vertex index below mesh.positions.size() = " +
+                                        std::to_string(mesh.positions.size()));
+            }
+        }
+    }
+}
+
 glm::vec3 facet_normal(const Mesh& mesh, const Triangle& t) {
     const glm::dvec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
     const double length = glm::length(n);
@@ -43,6 +61,7 @@ glm::vec3 facet_normal(const Mesh& mesh, const Triangle& t) {
 }  // namespace
 
 void write_ply(const Mesh& mesh, const std::string& path, PlyEncoding encoding) {
+    require_valid_indices(mesh);
     const bool colored = mesh.colors.size() == mesh.positions.size() && !mesh.colors.empty();
     const bool big = encoding == PlyEncoding::binary_big_endian;
     std::string out = "ply\nformat ";
@@ -80,6 +99,7 @@ void write_ply(const Mesh& mesh, const std::string& path, PlyEncoding encoding) 
 }
 
 void write_stl(const Mesh& mesh, const std::string& path, bool binary) {
+    require_valid_indices(mesh);
     std::string out;
     if (binary) {
         out.assign(80, ' ');
@@ -114,6 +134,7 @@ void write_stl(const Mesh& mesh, const std::string& path, bool binary) {
 }
 
 void write_glb(const Mesh& mesh, const std::string& path) {
+    require_valid_indices(mesh);
     const bool colored = mesh.colors.size() == mesh.positions.size() && !mesh.colors.empty();
     std::string bin;
     glm::vec3 low(0.0f), high(0.0f);

@@ -1,4 +1,5 @@
 #include "phongrast/io/scene_file.hpp"
+#include "phongrast/image.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -21,9 +22,10 @@ namespace {
 
 using nlohmann::json;
 
-/// Largest image side accepted from a file: beyond it the float image alone
-/// would need gigabytes, which is a typo more often than a wish.
-constexpr std::int64_t max_image_side = 32768;
+/// Largest image side accepted from a file: the library's (phongrast/image.hpp),
+/// shared with the command and Python; the pixel count is checked by the
+/// library's validation.
+constexpr std::int64_t max_image_side = kMaxImageSide;
 
 std::string type_of(const json& value) {
     if (value.is_number()) return "a number";

@@ -21,6 +21,7 @@ Image compose_sheet(const std::vector<SheetCell>& cells, int columns) {
     const int cell_rows = cells.front().image.rows;
     const int cell_columns = cells.front().image.columns;
     for (const SheetCell& cell : cells) {
+        validate_image(cell.image);  // a short pixel buffer would be read past its end
         if (cell.image.rows != cell_rows || cell.image.columns != cell_columns) {
             throw std::invalid_argument("compose_sheet: every image must have the same size");
         }

@@ -1,5 +1,6 @@
 #include "image_array.hpp"
 
+#include <cstdint>
 #include <cstring>
 #include <memory>
 
@@ -35,12 +36,31 @@ py::array points_to_array(std::vector<glm::vec3>&& values) {
 }
 
 Image array_to_image(py::handle value, const std::string& name) {
-    const auto array = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(value);
-    if (!array || array.ndim() != 3 || array.shape(2) != 3 || array.shape(0) < 1 || array.shape(1) < 1) {
+    // The scale follows the dtype, as numpy/PIL images mean it: uint8 holds
+    // 0 to 255 (divided by 255 here), floats hold 0 to 1. Any other integer
+    // type is ambiguous (0-255? 0-65535? 0-1?) and refused.
+    const py::array any = py::array::ensure(value);
+    if (!any) throw py::type_error(name + ": expected a numpy array (or nested lists) of RGB values");
+    const char kind = any.dtype().kind();
+    const bool bytes = kind == 'u' && any.dtype().itemsize() == 1;
+    if (!bytes && kind != 'f') {
+        throw py::type_error(name + ": expected dtype uint8 (0 to 255) or a float dtype (0 to 1), got " +
+                             std::string(py::str(any.dtype())));
+    }
+    if (any.ndim() != 3 || any.shape(2) != 3 || any.shape(0) < 1 || any.shape(1) < 1) {
         throw py::value_error(name + ": expected an M x N x 3 array of RGB values");
     }
-    Image image(static_cast<int>(array.shape(0)), static_cast<int>(array.shape(1)));
-    std::memcpy(image.pixels.data(), array.data(), image.pixels.size() * sizeof(glm::vec3));
+    validate_image_size(any.shape(0), any.shape(1), (name + ".shape[0]").c_str(), (name + ".shape[1]").c_str());
+    Image image(static_cast<int>(any.shape(0)), static_cast<int>(any.shape(1)));
+    if (bytes) {
+        const auto array = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(any);
+        const std::uint8_t* data = array.data();
+        float* pixels = &image.pixels.data()->x;
+        for (std::size_t i = 0; i < image.pixels.size() * 3; ++i) pixels[i] = static_cast<float>(data[i]) / 255.0f;
+    } else {
+        const auto array = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(any);
+        std::memcpy(image.pixels.data(), array.data(), image.pixels.size() * sizeof(glm::vec3));
+    }
     return image;
 }
 
@@ -49,6 +69,7 @@ py::dict stats_to_dict(const RenderStats& stats) {
     for (const RenderCounter& counter : render_counters()) d[counter.name] = stats.*counter.field;
     d["effects"] = to_string(stats.effects);
     d["back_faces_culled"] = stats.back_faces_culled;
+    d["empty_scene"] = stats.empty_scene;
     d["seconds"] = stats.seconds;
     return d;
 }

@@ -20,7 +20,9 @@ namespace py = pybind11;
 py::array image_to_array(Image&& image);
 /// An Nv x 3 array that takes over `values` (float32 for vec3, float64 for dvec3).
 py::array points_to_array(std::vector<glm::vec3>&& values);
-/// Copies an M x N x 3 array of numbers into an Image (for writing files).
+/// Copies an M x N x 3 array into an Image (for writing files): uint8 values
+/// are 0 to 255 and divided by 255, float values are 0 to 1 and kept as they
+/// are; other dtypes raise TypeError, a size past the limit ValueError.
 Image array_to_image(py::handle value, const std::string& name);
 /// A numpy view of `count` x 3 values at `data`, kept alive by `owner`.
 template <typename Component>

@@ -2,7 +2,9 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
+#include "signatures.hpp"
 #include "phongrast/io/error.hpp"
+#include "phongrast/progress.hpp"
 #include "phongrast/version.hpp"
 
 PYBIND11_MODULE(phongrast, module) {
@@ -34,7 +36,12 @@ malformed files raise phongrast.FileError (a ValueError) naming the file.)";
     py::register_exception<phongrast::io::FileError>(module, "FileError", PyExc_ValueError);
     module.attr("FileError").attr("__doc__") =
         "A file could not be read or written, or is malformed; the message names the file and the line or field.";
+    // The progress callable returned False: the render stopped (Ctrl-C raises KeyboardInterrupt instead).
+    py::register_exception<phongrast::RenderCancelled>(module, "RenderCancelled", PyExc_RuntimeError);
+    module.attr("RenderCancelled").attr("__doc__") =
+        "The render's progress callable returned False; a Renderer stays usable.";
     phongrast::python::bind_seed_functions(module);
     phongrast::python::bind_seed_fill(module);
     phongrast::python::bind_scene_api(module);
+    phongrast::python::add_text_signatures(module);  // last: inspect.signature() for everything above
 }

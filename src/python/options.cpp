@@ -22,13 +22,17 @@ const char* const option_keywords_doc = R"(Rendering keywords:
     back_faces: "draw" (default, the contract) or "cull" (closed meshes seen from outside)
     texture_filter: "bilinear" (default, the contract), "nearest" or "trilinear"
     aovs: extra outputs, "depth,normal,id,alpha" (any of them, or "all"); render and
-        Renderer.render then return (image, stats, planes), planes a dict of arrays)";
+        Renderer.render then return (image, stats, planes), planes a dict of arrays
+    progress: a callable taking the fraction done (0 to 1), called about every 20 ms
+        from the rendering thread; returning False cancels (phongrast.RenderCancelled),
+        an exception it raises stops the render and propagates. Ctrl-C stops any
+        render, with or without it, raising KeyboardInterrupt)";
 
 RenderOptions options_from_keywords(const py::kwargs& keywords, const std::string& default_mode) {
     std::map<std::string, std::string> names{{"mode", default_mode}};
     for (const auto& item : keywords) {
         const std::string key = py::str(item.first);
-        if (key == "samples" || key == "threads" || key == "aovs") continue;
+        if (key == "samples" || key == "threads" || key == "aovs" || key == "progress") continue;
         bool named = false;
         for (const NamedOption& option : named_options()) named = named || option.key == key;
         if (!named) throw py::type_error("unexpected keyword argument '" + key + "'; " + option_keywords_doc);

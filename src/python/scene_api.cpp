@@ -13,6 +13,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "image_array.hpp"
+#include "interrupts.hpp"
 #include "phongrast/io/aov_file.hpp"
 #include "phongrast/io/auto_scene.hpp"
 #include "phongrast/io/error.hpp"
@@ -227,13 +228,15 @@ PyScene scene_from_dict(py::dict description, const std::string& folder) {
     return complete_scene(std::move(file), "scene dict", mesh, std::move(object_meshes));
 }
 
-py::tuple render_with_stats(const PyScene& scene, const RenderOptions& options) {
+py::tuple render_with_stats(const PyScene& scene, RenderOptions options, py::object progress_callable) {
     const std::shared_ptr<const Scene> keep = scene.scene;
     RenderResult result;
-    {
+    PythonProgress progress(std::move(progress_callable));  // Ctrl-C and `progress` (interrupts.hpp)
+    options.progress = progress.callback();
+    progress.run([&] {
         py::gil_scoped_release release;
         result = render(*keep, options);
-    }
+    });
     py::dict stats = stats_to_dict(result.stats);
     if (options.aovs.any()) {
         return py::make_tuple(image_to_array(std::move(result.image)), stats, aovs_to_dict(std::move(result.aovs)));
@@ -257,20 +260,33 @@ std::vector<double> time_calls(int repeats, const Call& call) {
 struct PyRenderer {
     Renderer renderer;
     std::mutex busy;
+    py::object progress = py::none();  ///< the `progress` keyword, or None
 
     py::tuple render_frame(const PyScene& scene) {
         const std::shared_ptr<const Scene> keep = scene.scene;
         Image image;
         RenderStats stats;
         AovPlanes aovs;
-        {
+        PythonProgress reports(progress);  // Ctrl-C and `progress` (interrupts.hpp)
+        reports.run([&] {
             py::gil_scoped_release release;
             const std::lock_guard<std::mutex> lock(busy);
+            // The callback lives for this frame only: take it out again however the frame ends.
+            struct FrameProgress {
+                Renderer& renderer;
+                FrameProgress(Renderer& r, ProgressCallback callback) : renderer(r) { set(std::move(callback)); }
+                ~FrameProgress() { set(nullptr); }
+                void set(ProgressCallback callback) {
+                    RenderOptions options = renderer.options();
+                    options.progress = std::move(callback);
+                    renderer.set_options(options);
+                }
+            } frame_progress(renderer, reports.callback());
             const RenderResult& result = renderer.render(*keep);
             image = result.image;  // the Renderer reuses its buffers for the next frame
             stats = result.stats;
             aovs = result.aovs;
-        }
+        });
         if (renderer.options().aovs.any()) {
             return py::make_tuple(image_to_array(std::move(image)), stats_to_dict(stats), aovs_to_dict(std::move(aovs)));
         }
@@ -456,8 +472,8 @@ void bind_scene_camera(py::class_<PyScene>& scene) {
                        }, "(H, W): height and width of the image plane in world units.");
     scene.def_property("size", [](const PyScene& s) { return py::make_tuple(s.scene->image.rows, s.scene->image.columns); },
                        [](PyScene& s, std::pair<py::object, py::object> mn) {
-                           s.scene->image.rows = read_int(mn.first, "size[0]", 1, 32768);
-                           s.scene->image.columns = read_int(mn.second, "size[1]", 1, 32768);
+                           s.scene->image.rows = read_int(mn.first, "size[0]", 1, kMaxImageSide);
+                           s.scene->image.columns = read_int(mn.second, "size[1]", 1, kMaxImageSide);
                        }, "(M, N): rows and columns of pixels.");
 }
 
@@ -504,7 +520,7 @@ void bind_scene_look(py::class_<PyScene>& scene) {
 /// render, Renderer, and the C++ timings bench/python_overhead.py compares them with.
 void bind_rendering(py::module_& module) {
     module.def("render", [](const PyScene& s, const py::kwargs& keywords) {
-        return render_with_stats(s, options_from_keywords(keywords, "exact"));
+        return render_with_stats(s, options_from_keywords(keywords, "exact"), progress_keyword(keywords));
     }, py::arg("scene"), (std::string("render(scene, **options) -> (image, stats)\n\n"
         "Renders the scene: image is M x N x 3 float32, row 0 at the top, owning the C++ buffer (no copy); "
         "stats is a dict (triangles drawn, dropped, clipped, samples, seconds, ...). mode=\"exact\" by default.\n\n") +
@@ -520,6 +536,7 @@ next frame reuses). One frame at a time: concurrent calls on one Renderer wait.
         .def(py::init([](const py::kwargs& keywords) {
             auto renderer = std::make_unique<PyRenderer>();
             renderer->renderer.set_options(options_from_keywords(keywords, "exact"));
+            renderer->progress = progress_keyword(keywords);
             return renderer;
         }))
         .def("render", &PyRenderer::render_frame, py::arg("scene"), "Renders one frame: (image, stats).")
@@ -586,7 +603,8 @@ automatically. Every field is a property.)");
         io::write_image(array_to_image(image, "image"), path);
     }, py::arg("image"), py::arg("path"),
        "Writes an M x N x 3 image: .png (8 bits, clamped to [0, 1], no gamma) or .exr (32-bit float), "
-       "through a temporary file renamed into place.");
+       "through a temporary file renamed into place. A uint8 array holds 0 to 255 (128 is 128/255 grey); a float "
+       "array holds 0 to 1; other dtypes raise TypeError.");
     module.def("read_aovs", [](const std::string& path) {
         Image image;
         AovPlanes planes;

@@ -9,6 +9,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "image_array.hpp"
+#include "interrupts.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/render.hpp"
 
@@ -56,8 +57,8 @@ py::array render_object(const py::object& shader, const py::object& focal, const
     Scene scene;
     scene.shader = read_shader(shader, "shader");
     scene.camera = read_seed_camera(focal, eye, lookat, up, H, W);
-    scene.image.rows = read_int(M, "M", 1, 32768);
-    scene.image.columns = read_int(N, "N", 1, 32768);
+    scene.image.rows = read_int(M, "M", 1, kMaxImageSide);
+    scene.image.columns = read_int(N, "N", 1, kMaxImageSide);
     scene.image.background = glm::vec3(read_vec3(bg_color, "bg_color", true));
     scene.mesh.positions = read_points(verts, "verts", layout);
     if (!vert_colors.is_none()) {
@@ -68,17 +69,19 @@ py::array render_object(const py::object& shader, const py::object& focal, const
     scene.lights = read_lights(lights, "lights");
     scene.ambient = glm::vec3(read_vec3(light_amb, "light_amb", true));
     scene.lighting = read_lighting(lighting, "lighting");
-    const RenderOptions options = options_from_keywords(keywords, "seed");
+    RenderOptions options = options_from_keywords(keywords, "seed");
     try {
         make_camera_frame(scene.camera, scene.image.rows, scene.image.columns);
     } catch (const std::invalid_argument& error) {
         throw py::value_error(seed_names(error.what()));
     }
     RenderResult result;
-    {
+    PythonProgress progress(progress_keyword(keywords));  // Ctrl-C and `progress` (interrupts.hpp)
+    options.progress = progress.callback();
+    progress.run([&] {
         py::gil_scoped_release release;
         result = render(scene, options);
-    }
+    });
     return image_to_array(std::move(result.image));
 }
 

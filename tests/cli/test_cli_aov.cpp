@@ -162,3 +162,16 @@ TEST_CASE("Ctrl-C during render or sheet exits 130 and leaves the folder as it w
                           std::chrono::milliseconds(400)) == 130);
     CHECK(snapshot(folder) == before);
 }
+
+TEST_CASE("render with aov and no -o writes NAME.exr, not an error") {
+    TemporaryFolder folder;
+    const Run run = run_cli(folder, "render '" + default_scene + "' --aov depth --size 16x12 -q");
+    CHECK(run.status == 0);
+    REQUIRE(std::filesystem::exists(folder.file("default.exr")));
+    CHECK_FALSE(std::filesystem::exists(folder.file("default.png")));
+    Image image;
+    AovPlanes planes;
+    io::read_exr_with_aovs(folder.file("default.exr"), image, planes);
+    CHECK(image.rows == 12);
+    CHECK(planes.depth.size() == 16u * 12u);
+}

@@ -40,3 +40,16 @@ def test_the_readme_pythonic_example_runs(tmp_path, monkeypatch):
     run_in(tmp_path, readme_python_blocks()[1], monkeypatch)
     image = phongrast.read_image(str(tmp_path / "default-2x2.exr"))
     assert image.shape == (512, 512, 3) and image.std() > 0.05
+
+
+def test_the_readme_python_section_starts_with_the_pip_commands_the_install_test_runs():
+    text = (SOURCE_DIR / "README.md").read_text()
+    section = text.split("## From Python", 1)[1].split("\n## ", 1)[0]
+    first_block = re.search(r"```sh\n(.*?)```", section, re.S)
+    assert first_block and section.index("```sh") < section.index("```python")
+    commands = first_block.group(1).splitlines()
+    assert commands[:2] == ["python3 -m venv --system-site-packages .venv",
+                            ".venv/bin/pip install --no-build-isolation ."]
+    install_test = (SOURCE_DIR / "tests" / "python" / "pip_install.cmake").read_text()
+    assert "-m venv --system-site-packages" in install_test
+    assert "install --no-build-isolation" in install_test

@@ -117,3 +117,35 @@ def test_help_documents_everything():
         for name, member in vars(cls).items():
             if not name.startswith("_") and isinstance(member, property):
                 assert member.__doc__, f"{cls.__name__}.{name}"
+
+
+def test_write_image_takes_uint8_as_0_to_255_and_floats_as_0_to_1(tmp_path):
+    grey = np.full((4, 5, 3), 128, np.uint8)
+    phongrast.write_image(grey, str(tmp_path / "grey.png"))
+    back = phongrast.read_image(str(tmp_path / "grey.png"))
+    assert back.shape == (4, 5, 3)
+    assert np.all(np.round(back * 255) == 128)  # 128/255 grey, not white
+    phongrast.write_image(grey, str(tmp_path / "grey.exr"))
+    assert np.allclose(phongrast.read_image(str(tmp_path / "grey.exr")), 128 / 255)
+    phongrast.write_image(np.full((4, 5, 3), 0.25, np.float64), str(tmp_path / "quarter.exr"))
+    assert np.all(phongrast.read_image(str(tmp_path / "quarter.exr")) == np.float32(0.25))
+    with pytest.raises(TypeError, match="uint8"):
+        phongrast.write_image(np.full((4, 5, 3), 128, np.int64), str(tmp_path / "ints.png"))
+    with pytest.raises(ValueError, match="GiB"):
+        phongrast.write_image(np.broadcast_to(np.float32(0), (40000, 4, 3)), str(tmp_path / "tall.png"))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["grey.exr", "grey.png", "quarter.exr"]
+
+
+def test_render_statistics_report_an_empty_mesh_and_sizes_past_the_limit_name_the_memory():
+    mesh = phongrast.Mesh(np.zeros((3, 3)), np.zeros((0, 3), np.uint32))
+    scene = phongrast.Scene.from_mesh(phongrast.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]]), 8, 8)
+    assert phongrast.render(scene)[1]["empty_scene"] is False
+    scene.mesh = mesh
+    image, stats = phongrast.render(scene)
+    assert stats["empty_scene"] is True
+    assert stats["triangles_in"] == 0
+    scene.size = (20000, 20000)
+    with pytest.raises(ValueError, match="GiB"):
+        phongrast.render(scene)
+    with pytest.raises(ValueError, match="32768"):
+        scene.size = (40000, 10)
