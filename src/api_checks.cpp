@@ -27,19 +27,6 @@ std::string vector_text(const glm::vec3& v) {
     return text;
 }
 
-/// `index` >= 0 names element `index` of `member` ("lights[2].intensity"
-/// from "lights", 2, ".intensity"); the name is only built for the message,
-/// so a valid scene allocates nothing here (Renderer's frames allocate nothing).
-void require_non_negative(const glm::vec3& value, const char* member, const char* why, long index = -1,
-                          const char* field = "") {
-    if (value.x < 0.0f || value.y < 0.0f || value.z < 0.0f) {
-        const std::string name =
-            index < 0 ? std::string(member) : std::string(member) + "[" + std::to_string(index) + "]" + field;
-        throw std::invalid_argument(name + ": expected numbers of at least 0 (" + why + "), got " +
-                                    vector_text(value));
-    }
-}
-
 }  // namespace
 
 void validate_option_values(const RenderOptions& options) {
@@ -75,18 +62,6 @@ void validate_image_request(const ImageSpec& image, const RenderOptions& options
                                 std::to_string(options.samples_per_axis) + "^2 samples would take " +
                                 memory_text(samples * double(kImageBytesPerPixel)) + " as float RGB; expected " +
                                 image_limit_text("samples") + ": fewer samples per axis or a smaller image");
-    }
-}
-
-void validate_non_negative_light(const Scene& scene) {
-    const char* const reflect = "a surface reflects a share of the light, never less than none";
-    require_non_negative(scene.material.ka, "material.ka", reflect);
-    require_non_negative(scene.material.kd, "material.kd", reflect);
-    require_non_negative(scene.material.ks, "material.ks", reflect);
-    require_non_negative(scene.ambient, "ambient", "a light adds light; there are no light sinks");
-    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        require_non_negative(scene.lights[i].intensity, "lights", "a light adds light; there are no light sinks",
-                             static_cast<long>(i), ".intensity");
     }
 }
 

@@ -22,9 +22,6 @@ void validate_scene_enums(const Scene& scene);
 /// The image against validate_image_size(), and its samples (rows x columns x
 /// samples_per_axis^2) against kMaxImagePixels: std::length_error past them.
 void validate_image_request(const ImageSpec& image, const RenderOptions& options);
-/// material.ka, kd, ks, ambient and every light's intensity at least 0
-/// (after the finite check): std::invalid_argument naming the member.
-void validate_non_negative_light(const Scene& scene);
 /// Mesh::normals finite: std::invalid_argument naming the first bad one.
 /// (A zero normal is defined behaviour: the computed one replaces it.)
 void validate_user_normals(const Mesh& mesh);

@@ -182,7 +182,6 @@ void validate_render_request(const Scene& scene, const RenderOptions& options) {
     validate_option_values(options);
     validate_scene_enums(scene);
     validate_material_and_lights(scene);
-    validate_non_negative_light(scene);
     const LitBound bound = lit_bound(scene);
     validate_mesh(scene.mesh, colour_limit(bound, scene.mesh.colors.empty()), [&](const glm::vec3& colour) {
         return largest(glm::abs(glm::dvec3(colour)) * bound.per_colour + bound.fixed);
