@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "phongrast/io/error.hpp"
@@ -49,6 +50,47 @@ void write_with_openimageio(const Image& image, const std::string& temporary,
     if (!written || !closed) throw FileError(path + ": write failed: " + output->geterror());
 }
 
+/// Reads an opened image's first subimage in its own type and converts each
+/// value with one correctly rounded division (OpenImageIO's own conversion
+/// multiplies by a rounded reciprocal, which can be one unit off).
+StoredImage read_stored(OIIO::ImageInput& input, const std::string& name) {
+    const OIIO::ImageSpec& spec = input.spec();
+    if (spec.nchannels < 1 || spec.width < 1 || spec.height < 1) throw FileError(name + ": image has no pixels");
+    StoredImage image;
+    image.rows = spec.height;
+    image.columns = spec.width;
+    image.channels = spec.nchannels;
+    const std::size_t count = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
+                              static_cast<std::size_t>(spec.nchannels);
+    image.values.resize(count);
+    const bool uniform = spec.channelformats.empty();
+    const auto read = [&](OIIO::TypeDesc type, void* data) {
+        if (!input.read_image(0, 0, 0, spec.nchannels, type, data)) {
+            throw FileError(name + ": cannot read image: " + input.geterror());
+        }
+    };
+    const auto convert = [&](auto sample, float maximum) {
+        std::vector<decltype(sample)> raw(count);
+        read(OIIO::BaseTypeFromC<decltype(sample)>::value, raw.data());
+        for (std::size_t i = 0; i < count; ++i) image.values[i] = static_cast<float>(raw[i]) / maximum;
+    };
+    if (uniform && spec.format == OIIO::TypeDesc::UINT8) {
+        convert(std::uint8_t{}, 255.0f);
+    } else if (uniform && spec.format == OIIO::TypeDesc::UINT16) {
+        convert(std::uint16_t{}, 65535.0f);
+    } else {
+        read(OIIO::TypeDesc::FLOAT, image.values.data());  // half and float exactly
+    }
+    return image;
+}
+
+/// Do not multiply colour by alpha (OpenImageIO's PNG reader does by default).
+OIIO::ImageSpec stored_values_config() {
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    return config;
+}
+
 }  // namespace
 
 ImageFormat image_format_for(const std::string& path) {
@@ -85,6 +127,25 @@ Image read_image(const std::string& path) {
         }
     }
     return image;
+}
+
+}  // namespace phongrast::io
+
+namespace phongrast::io {
+
+StoredImage read_stored_image(const std::string& path) {
+    const OIIO::ImageSpec config = stored_values_config();
+    auto input = OIIO::ImageInput::open(path, &config);
+    if (!input) throw FileError(path + ": cannot read image: " + OIIO::geterror());
+    return read_stored(*input, path);
+}
+
+StoredImage read_stored_image(std::string_view bytes, const std::string& name) {
+    const OIIO::ImageSpec config = stored_values_config();
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    auto input = OIIO::ImageInput::open(name, &config, &memory);
+    if (!input) throw FileError(name + ": cannot read image: " + OIIO::geterror());
+    return read_stored(*input, name);
 }
 
 }  // namespace phongrast::io
