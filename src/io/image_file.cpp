@@ -141,9 +141,13 @@ StoredImage read_stored_image(const std::string& path) {
 }
 
 StoredImage read_stored_image(std::string_view bytes, const std::string& name) {
-    const OIIO::ImageSpec config = stored_values_config();
+    OIIO::ImageSpec config = stored_values_config();
     OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-    auto input = OIIO::ImageInput::open(name, &config, &memory);
+    // The proxy as a configuration hint: OpenImageIO 2.4's open(name, config,
+    // proxy) still looks for a file called `name`.
+    void* proxy = &memory;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    auto input = OIIO::ImageInput::open(name, &config);
     if (!input) throw FileError(name + ": cannot read image: " + OIIO::geterror());
     return read_stored(*input, name);
 }
