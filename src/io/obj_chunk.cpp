@@ -109,7 +109,10 @@ private:
         chunk_.colors.emplace_back(1.0f);
     }
 
-    void vertex(const char* p, const char* end) {
+    // Flattened: the hot path of every `v` line keeps fast_float inline (with
+    // `vt` and `vn` lines parsing numbers too, the compiler would otherwise
+    // call it out of line for every coordinate).
+    [[gnu::flatten]] void vertex(const char* p, const char* end) {
         // v x y z [w] or v x y z r g b: 3, 4 or 6 numbers.
         std::string_view words[6];
         std::size_t count = 0;
@@ -243,7 +246,7 @@ private:
         const std::size_t slash = word.find('/');
         const IndexKind vertices{"vertex", "vertices", static_cast<std::int64_t>(chunk_.positions.size()),
                                  range_ ? range_->vertices_before : 0, range_ ? range_->vertices_in_file : 0};
-        if (slash == std::string_view::npos) return index(word, word, vertices, vertex);  // the plain OBJ's path
+        if (slash == std::string_view::npos) return index(word, word, vertices, vertex);  // a plain OBJ's corner
         std::string problem = index(word, word.substr(0, slash), vertices, vertex);
         if (!problem.empty()) return problem;
         const std::string_view rest = word.substr(slash + 1);
@@ -281,21 +284,26 @@ private:
         for (std::size_t k = 1; k + 1 < corners.size(); ++k) out.push_back({corners[0], corners[k], corners[k + 1]});
     }
 
-    void face(const char* p, const char* end) {
+    // Flattened like vertex(): the index parsing of every corner stays inline.
+    [[gnu::flatten]] void face(const char* p, const char* end) {
         corners_.clear();
+        // The vt/vn lists stay empty until a corner has one (then padded with
+        // kNoCorner for the corners before it): a plain face only fills corners_.
         texcoord_corners_.clear();
         normal_corners_.clear();
-        bool any_texcoord = false;
-        bool any_normal = false;
         std::string problem;
         for (std::string_view word = next_word(p, end); !word.empty(); word = next_word(p, end)) {
             TaggedCorner vertex = 0, texcoord = kNoCorner, normal = kNoCorner;
             if (problem.empty()) problem = corner(word, vertex, texcoord, normal);
+            if (texcoord != kNoCorner) {
+                texcoord_corners_.resize(corners_.size(), kNoCorner);
+                texcoord_corners_.push_back(texcoord);
+            }
+            if (normal != kNoCorner) {
+                normal_corners_.resize(corners_.size(), kNoCorner);
+                normal_corners_.push_back(normal);
+            }
             corners_.push_back(vertex);
-            texcoord_corners_.push_back(texcoord);
-            normal_corners_.push_back(normal);
-            any_texcoord = any_texcoord || texcoord != kNoCorner;
-            any_normal = any_normal || normal != kNoCorner;
         }
         if (corners_.size() < 3) {
             return fail("face with " + std::to_string(corners_.size()) + " vertices; expected at least 3");
@@ -305,8 +313,14 @@ private:
         for (std::size_t k = 1; k + 1 < corners_.size(); ++k) {  // the contract's fan: v0 v_k v_k+1
             chunk_.triangles.push_back({corners_[0], corners_[k], corners_[k + 1]});
         }
-        if (any_texcoord) add_fan(texcoord_corners_, chunk_.texcoord_triangles, triangles_before);
-        if (any_normal) add_fan(normal_corners_, chunk_.normal_triangles, triangles_before);
+        if (!texcoord_corners_.empty()) {
+            texcoord_corners_.resize(corners_.size(), kNoCorner);
+            add_fan(texcoord_corners_, chunk_.texcoord_triangles, triangles_before);
+        }
+        if (!normal_corners_.empty()) {
+            normal_corners_.resize(corners_.size(), kNoCorner);
+            add_fan(normal_corners_, chunk_.normal_triangles, triangles_before);
+        }
         ++chunk_.faces;
     }
 
