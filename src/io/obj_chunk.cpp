@@ -77,9 +77,12 @@ public:
             return static_cast<std::size_t>(end - p) >= length && std::memcmp(p, word, length) == 0 &&
                    (p + length == end || is_blank(p[length]));
         };
+        // `v` and `f` first: nearly every line of a large file is one of them.
         if (keyword("v", 1)) {
             if (failed()) return count_vertex();
             vertex(p + 1, end);
+        } else if (keyword("f", 1)) {
+            if (!failed()) face(p + 1, end);
         } else if (keyword("vt", 2)) {
             if (failed()) return void(chunk_.texcoords.emplace_back(0.0f));
             texcoord(p + 2, end);
@@ -88,8 +91,6 @@ public:
             normal(p + 2, end);
         } else if (failed()) {
             return;
-        } else if (keyword("f", 1)) {
-            face(p + 1, end);
         } else if (keyword("usemtl", 6) || keyword("mtllib", 6)) {
             material(p[0] == 'm', p + 6, end);
         }
