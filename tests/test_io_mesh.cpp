@@ -126,7 +126,7 @@ TEST_CASE("STL: corners at the same position are welded, in order of first appea
     CHECK(mesh.colors.empty());
 }
 
-TEST_CASE("glTF: node transforms, base colour factors, external buffers, a texture warning") {
+TEST_CASE("glTF: node transforms, base colour factors, external buffers, texture warnings") {
     TemporaryFolder folder;
     // One triangle (positions, then uint16 indices), used by two nodes.
     std::string bin;
@@ -152,9 +152,15 @@ TEST_CASE("glTF: node transforms, base colour factors, external buffers, a textu
     REQUIRE(mesh.positions.size() == 6);
     CHECK(mesh.positions[1] == glm::dvec3(11, 0, 0));
     CHECK(mesh.positions[4] == glm::dvec3(12, 5, 0));  // child: parent's translation after its own
-    CHECK(mesh.colors[4] == glm::vec3(0.25f, 0.5f, 1.0f));
+    // The factor is the material's colour factor (contract version 2), vertices stay white.
+    CHECK(mesh.colors[4] == glm::vec3(1.0f));
+    REQUIRE(mesh.materials.size() == 1);
+    CHECK(mesh.materials[0].color_factor == glm::vec3(0.25f, 0.5f, 1.0f));
+    CHECK(mesh.face_materials == std::vector<std::uint32_t>{0, 0});
     CHECK(mesh.triangles[0] == phongrast::Triangle{0, 1, 2});
     CHECK(mesh.triangles[1] == phongrast::Triangle{3, 5, 4});  // the mirroring scale turns the winding back
-    REQUIRE(file.warnings.size() == 1);
-    CHECK_THAT(file.warnings[0], Contains("textures ignored"));
+    // The texture's file is missing, and the primitive has no TEXCOORD_0 either.
+    REQUIRE(file.warnings.size() == 2);
+    CHECK_THAT(file.warnings[0], Contains("missing.png: no such file"));
+    CHECK_THAT(file.warnings[1], Contains("2 triangles with a textured material") && Contains("no texture coordinates"));
 }

@@ -22,6 +22,7 @@ TEST_CASE("vertex colours, a fan-triangulated quad and negative indices") {
                                           "v 1 0 0 0 1 0\n"
                                           "v 1 1 0 0 0 1\n"
                                           "v 0 1 0 0.5 0.5 0.5\n"
+                                          "vt 0 0\nvn 0 0 1\nvn 0 0 1\n"
                                           "f 1 2 3 4\n"
                                           "f -4/1/1 -3//2 -1\n");
     const phongrast::io::ObjFile obj = read_obj(path);
@@ -125,6 +126,8 @@ TEST_CASE("polygons are fanned and negative indices count back from the line") {
     TemporaryFolder folder;
     const phongrast::io::ObjFile obj = read_obj(folder.write(
         "pentagon.obj", "v 0 0 0\nv 2 0 0\nv 3 2 0\nv 1 3 0\nv -1 2 0\n"
+                        "vt 0 0\nvt 0.5 0\nvt 1 0.5\nvt 0.5 1\nvt 0 0.5\nvt 1 1\n"
+                        "vn 1 0 0\nvn 0 1 0\nvn 0 0 1\nvn -1 0 0\nvn 0 -1 0\n"
                         "f -5/1/1 -4/2/2 -3/3/3 -2/4/4 -1/5/5\n"  // a pentagon, v/vt/vn, relative
                         "v 0 0 1\n\tf\t1//1 -1//1   2//1 # tabs, v//vn and a comment\r\n"
                         "f 1/1 2/2 6/6\n"));
@@ -134,6 +137,19 @@ TEST_CASE("polygons are fanned and negative indices count back from the line") {
     CHECK(obj.mesh.triangles[2] == phongrast::Triangle{0, 3, 4});
     CHECK(obj.mesh.triangles[3] == phongrast::Triangle{0, 5, 1});
     CHECK(obj.mesh.triangles[4] == phongrast::Triangle{0, 1, 5});
+    // The vt and vn indices follow the same fan, corner by corner.
+    constexpr std::uint32_t none = phongrast::kNoIndex;
+    REQUIRE(obj.mesh.texcoord_triangles.size() == 5);
+    CHECK(obj.mesh.texcoord_triangles[0] == phongrast::Triangle{0, 1, 2});
+    CHECK(obj.mesh.texcoord_triangles[2] == phongrast::Triangle{0, 3, 4});
+    CHECK(obj.mesh.texcoord_triangles[3] == phongrast::Triangle{none, none, none});
+    CHECK(obj.mesh.texcoord_triangles[4] == phongrast::Triangle{0, 1, 5});
+    REQUIRE(obj.mesh.file_normal_triangles.size() == 5);
+    CHECK(obj.mesh.file_normal_triangles[1] == phongrast::Triangle{0, 2, 3});
+    CHECK(obj.mesh.file_normal_triangles[3] == phongrast::Triangle{0, 0, 0});
+    CHECK(obj.mesh.file_normal_triangles[4] == phongrast::Triangle{none, none, none});
+    CHECK(obj.mesh.texcoords.size() == 6);
+    CHECK(obj.mesh.file_normals.size() == 5);
 }
 
 namespace {
@@ -167,7 +183,7 @@ TEST_CASE("a file parsed in parallel chunks gives the sequential result and line
         CHECK(obj.mesh.colors[a + 2] == glm::vec3(0.25f, 0.5f, 0.75f));
     }
     REQUIRE(obj.warnings.size() == 1);
-    CHECK_THAT(obj.warnings[0], Contains("material [ 'none' ] not found"));
+    CHECK_THAT(obj.warnings[0], Contains("usemtl none: no such material"));
 
     // Line 3 x quads + 3 is after the strip; an index error early wins over a later bad number.
     const std::string late = strip + "v 1 2 x\n";

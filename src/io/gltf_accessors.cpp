@@ -165,3 +165,51 @@ std::vector<glm::vec3> GltfAccessors::colors(std::int64_t accessor) const {
 }
 
 }  // namespace phongrast::io
+
+namespace phongrast::io {
+
+std::vector<glm::vec3> GltfAccessors::normals(std::int64_t accessor) const {
+    const View v = view(accessor, "VEC3 of 5126 (float)");
+    std::vector<glm::vec3> result(v.count);
+    for (std::size_t i = 0; i < v.count; ++i) {
+        glm::vec3 n;
+        for (int k = 0; k < 3; ++k) n[k] = static_cast<float>(component(v, i, k));
+        if (std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z)) result[i] = n;
+    }
+    return result;
+}
+
+std::vector<glm::vec2> GltfAccessors::texcoords(std::int64_t accessor) const {
+    const View v = view(accessor, "VEC2 of 5126, VEC2 of 5121, VEC2 of 5123 (float, normalised unsigned byte or short)");
+    const double scale = v.component_type == unsigned_byte ? 1.0 / 255 : v.component_type == unsigned_short ? 1.0 / 65535 : 1.0;
+    std::vector<glm::vec2> result(v.count);
+    for (std::size_t i = 0; i < v.count; ++i) {
+        for (int k = 0; k < 2; ++k) result[i][k] = static_cast<float>(component(v, i, k) * scale);
+        if (!std::isfinite(result[i].x) || !std::isfinite(result[i].y)) {
+            gltf_fail(path_, "/accessors/" + std::to_string(accessor),
+                      "texture coordinate " + std::to_string(i) + " is not finite; expected finite numbers");
+        }
+    }
+    return result;
+}
+
+std::string_view GltfAccessors::buffer_view(std::int64_t index) const {
+    const std::string where = "/bufferViews/" + std::to_string(index);
+    const nlohmann::json& views = gltf_array(document_, "bufferViews");
+    if (index < 0 || static_cast<std::size_t>(index) >= views.size()) gltf_fail(path_, where, "no such buffer view");
+    const nlohmann::json& view = views[static_cast<std::size_t>(index)];
+    const std::int64_t buffer = gltf_integer(view, "buffer", where, path_);
+    if (buffer < 0 || static_cast<std::size_t>(buffer) >= buffers_.size()) {
+        gltf_fail(path_, where + "/buffer", "expected the index of one of the file's " + std::to_string(buffers_.size()) + " buffers");
+    }
+    const auto offset = static_cast<std::uint64_t>(gltf_integer(view, "byteOffset", where, path_, 0));
+    const auto length = static_cast<std::uint64_t>(gltf_integer(view, "byteLength", where, path_, 0));
+    const std::string_view data = buffers_[static_cast<std::size_t>(buffer)];
+    if (offset > data.size() || length > data.size() - offset) {
+        gltf_fail(path_, where, "bytes " + std::to_string(offset) + " + " + std::to_string(length) +
+                                    " exceed the buffer's " + std::to_string(data.size()) + " bytes");
+    }
+    return data.substr(offset, length);
+}
+
+}  // namespace phongrast::io

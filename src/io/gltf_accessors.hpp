@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
@@ -37,6 +38,13 @@ public:
     std::vector<std::uint32_t> indices(std::int64_t accessor) const;
     /// VEC3 or VEC4 colours: float, or normalised unsigned byte or short (alpha dropped).
     std::vector<glm::vec3> colors(std::int64_t accessor) const;
+    /// VEC3 float normals (a non-finite one becomes 0: "take the computed normal").
+    std::vector<glm::vec3> normals(std::int64_t accessor) const;
+    /// VEC2 texture coordinates (u, v): float, or normalised unsigned byte or
+    /// short; all finite.
+    std::vector<glm::vec2> texcoords(std::int64_t accessor) const;
+    /// The bytes of a buffer view (an image stored in the file's buffers).
+    std::string_view buffer_view(std::int64_t index) const;
 
 private:
     struct View {

@@ -1,18 +1,23 @@
 // glTF 2.0, as .gltf (JSON with external or base64 data: buffers) or .glb
 // (binary container): every triangle primitive of every mesh instance in the
-// default scene, with its node transforms; vertex colours from COLOR_0, else
-// the material's baseColorFactor. Textures are ignored, with one warning.
+// default scene, with its node transforms, in the contract's order (a
+// depth-first walk, each node before its children, primitives in order);
+// vertex colours from COLOR_0 (else white), NORMAL as the file's normals
+// (through the node matrices' inverse transpose), the texture's TEXCOORD_n as
+// (u, 1 - v), and each primitive's material (gltf_materials.hpp).
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <functional>
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
 #include "file_bytes.hpp"
 #include "gltf_accessors.hpp"
+#include "gltf_materials.hpp"
 #include "mesh_readers.hpp"
 #include "phongrast/io/error.hpp"
 
@@ -55,30 +60,6 @@ std::pair<std::string_view, std::string_view> split_glb(std::string_view bytes, 
     return {chunks[0], chunks[1]};
 }
 
-std::string decode_base64(std::string_view text, const std::string& path, const std::string& where) {
-    std::string out;
-    out.reserve(text.size() / 4 * 3);
-    std::uint32_t bits = 0;
-    int count = 0;
-    for (const char c : text) {
-        if (c == '=') break;
-        const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-        const char* at = c != '\0' ? std::strchr(alphabet, c) : nullptr;
-        if (at == nullptr) gltf_fail(path, where, "invalid base64 character in the data URI");
-        bits = (bits << 6) | static_cast<std::uint32_t>(at - alphabet);
-        if (++count == 4) {
-            out.push_back(static_cast<char>(bits >> 16));
-            out.push_back(static_cast<char>(bits >> 8));
-            out.push_back(static_cast<char>(bits));
-            bits = 0;
-            count = 0;
-        }
-    }
-    if (count >= 2) out.push_back(static_cast<char>(bits >> (count == 2 ? 4 : 10)));
-    if (count == 3) out.push_back(static_cast<char>(bits >> 2));
-    return out;
-}
-
 glm::dmat4 local_transform(const json& node, const std::string& where, const std::string& path) {
     const auto numbers = [&](const char* key, std::size_t count, std::vector<double> fallback) {
         const auto it = node.find(key);
@@ -107,7 +88,7 @@ glm::dmat4 local_transform(const json& node, const std::string& where, const std
 class GltfScene {
 public:
     GltfScene(const json& document, const GltfAccessors& accessors, const std::string& path)
-        : document_(document), accessors_(accessors), path_(path) {}
+        : document_(document), accessors_(accessors), path_(path), materials_(document, accessors, path, file_.warnings) {}
 
     MeshFile read() {
         const json& nodes = gltf_array(document_, "nodes");
@@ -116,9 +97,13 @@ public:
             for (std::size_t m = 0; m < gltf_array(document_, "meshes").size(); ++m) add_mesh(static_cast<std::int64_t>(m), glm::dmat4(1.0));
         }
         if (file_.mesh.triangles.empty()) throw FileError(path_ + ": no triangles in the scene's meshes; expected at least one");
-        if (document_.contains("textures") && !document_["textures"].empty()) {
-            file_.warnings.push_back(path_ + ": textures ignored: phongrast uses COLOR_0 or the base colour factor");
-        }
+        Mesh& mesh = file_.mesh;
+        // The per-triangle lists that were started, padded past the last primitive that had them.
+        const std::size_t triangles = mesh.triangles.size();
+        if (any_normals_) mesh.file_normal_triangles.resize(triangles, Triangle{kNoIndex, kNoIndex, kNoIndex});
+        if (any_texcoords_) mesh.texcoord_triangles.resize(triangles, Triangle{kNoIndex, kNoIndex, kNoIndex});
+        if (!mesh.materials.empty()) mesh.face_materials.resize(triangles, kNoIndex);
+        warn_textured_faces_without_texcoords(file_, path_);
         return std::move(file_);
     }
 
@@ -169,27 +154,6 @@ private:
         }
     }
 
-    glm::vec3 base_color(const json& primitive, const std::string& where) const {
-        const std::int64_t material = gltf_integer(primitive, "material", where, path_);
-        const json& materials = gltf_array(document_, "materials");
-        if (material < 0) return glm::vec3(1.0f);
-        if (static_cast<std::size_t>(material) >= materials.size()) gltf_fail(path_, where + "/material", "no such material");
-        const std::string at = "/materials/" + std::to_string(material) + "/pbrMetallicRoughness/baseColorFactor";
-        const json& pbr = gltf_object(materials[static_cast<std::size_t>(material)], "pbrMetallicRoughness");
-        if (!pbr.contains("baseColorFactor")) return glm::vec3(1.0f);
-        const json& factor = pbr["baseColorFactor"];
-        if (!factor.is_array() || factor.size() != 4) gltf_fail(path_, at, "expected 4 numbers");
-        glm::vec3 color;
-        for (int k = 0; k < 3; ++k) {
-            const json& v = factor[static_cast<std::size_t>(k)];
-            if (!v.is_number() || !(v.get<double>() >= 0.0 && v.get<double>() <= 1.0)) {
-                gltf_fail(path_, at, "expected numbers from 0 to 1, got " + v.dump());
-            }
-            color[k] = static_cast<float>(v.get<double>());
-        }
-        return color;
-    }
-
     void add_mesh(std::int64_t index, const glm::dmat4& world) {
         const json& meshes = gltf_array(document_, "meshes");
         const std::string where = "/meshes/" + std::to_string(index);
@@ -207,6 +171,9 @@ private:
     const std::string& path_;
     static constexpr std::size_t max_node_instances = 100000;
     MeshFile file_;
+    GltfMaterials materials_;
+    bool any_normals_ = false;
+    bool any_texcoords_ = false;
     std::size_t visits_ = 0;
     bool warned_mode_ = false;
 };
@@ -223,8 +190,19 @@ void GltfScene::add_primitive(const json& primitive, const glm::dmat4& world, co
     if (position < 0) gltf_fail(path_, where + "/attributes", "missing POSITION; expected a VEC3 float accessor");
     const std::vector<glm::dvec3> positions = accessors_.positions(position);
     const std::int64_t color = gltf_integer(attributes, "COLOR_0", where + "/attributes", path_);
-    std::vector<glm::vec3> colors = color >= 0 ? accessors_.colors(color) : std::vector<glm::vec3>(positions.size(), base_color(primitive, where));
+    std::vector<glm::vec3> colors = color >= 0 ? accessors_.colors(color) : std::vector<glm::vec3>(positions.size(), glm::vec3(1.0f));
     if (colors.size() != positions.size()) gltf_fail(path_, where + "/attributes/COLOR_0", "expected one colour per position");
+    const GltfMaterials::Use material = materials_.use(primitive, where, file_.mesh.materials);
+    const std::int64_t normal = gltf_integer(attributes, "NORMAL", where + "/attributes", path_);
+    const std::vector<glm::vec3> normals = normal >= 0 ? accessors_.normals(normal) : std::vector<glm::vec3>();
+    if (normal >= 0 && normals.size() != positions.size()) gltf_fail(path_, where + "/attributes/NORMAL", "expected one normal per position");
+    // The texture's set, else TEXCOORD_0 (for the uv output of untextured faces).
+    const std::string texcoord_name = "TEXCOORD_" + std::to_string(material.texcoord_set);
+    const std::int64_t texcoord = gltf_integer(attributes, texcoord_name.c_str(), where + "/attributes", path_);
+    const std::vector<glm::vec2> texcoords = texcoord >= 0 ? accessors_.texcoords(texcoord) : std::vector<glm::vec2>();
+    if (texcoord >= 0 && texcoords.size() != positions.size()) {
+        gltf_fail(path_, where + "/attributes/" + texcoord_name, "expected one texture coordinate per position");
+    }
     std::vector<std::uint32_t> indices;
     const std::int64_t index_accessor = gltf_integer(primitive, "indices", where, path_);
     if (index_accessor >= 0) {
@@ -255,11 +233,55 @@ void GltfScene::add_primitive(const json& primitive, const glm::dmat4& world, co
         mesh.positions.push_back(p);
         mesh.colors.push_back(colors[i]);
     }
-    // A mirroring transform turns the winding around; undo it so normals stay outward.
     const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    const auto normal_base = static_cast<std::uint32_t>(mesh.file_normals.size());
+    if (!normals.empty()) {
+        // The inverse transpose of the node matrix, as its cofactor matrix (the
+        // same direction, defined for a singular matrix too) with the
+        // determinant's sign, so that mirrored normals stay outward.
+        const glm::dmat3 m(world);
+        const glm::dmat3 cofactor(glm::cross(m[1], m[2]), glm::cross(m[2], m[0]), glm::cross(m[0], m[1]));
+        const double sign = mirrored ? -1.0 : 1.0;
+        make_room(mesh.file_normals, normals.size());
+        for (const glm::vec3& n : normals) {
+            const glm::dvec3 world_normal = sign * (cofactor * glm::dvec3(n));
+            const double length = glm::length(world_normal);
+            // Zero stays zero: the contract's "take the computed normal".
+            mesh.file_normals.push_back(length > 0.0 && std::isfinite(length) ? glm::vec3(world_normal / length)
+                                                                              : glm::vec3(0.0f));
+        }
+        any_normals_ = true;
+    }
+    const auto texcoord_base = static_cast<std::uint32_t>(mesh.texcoords.size());
+    if (!texcoords.empty()) {
+        make_room(mesh.texcoords, texcoords.size());
+        for (const glm::vec2& uv : texcoords) mesh.texcoords.emplace_back(uv.x, 1.0f - uv.y);  // glTF's v = 0 is the top row
+        any_texcoords_ = true;
+    }
+    // The per-triangle lists are kept from the first primitive that has such
+    // an attribute on, padded with kNoIndex for the triangles before it.
+    const std::size_t triangles_before = mesh.triangles.size();
+    const bool keep_normals = any_normals_;
+    const bool keep_texcoords = any_texcoords_;
+    const bool keep_materials = !mesh.materials.empty();
+    if (keep_normals) mesh.file_normal_triangles.resize(triangles_before, Triangle{kNoIndex, kNoIndex, kNoIndex});
+    if (keep_texcoords) mesh.texcoord_triangles.resize(triangles_before, Triangle{kNoIndex, kNoIndex, kNoIndex});
+    if (keep_materials) mesh.face_materials.resize(triangles_before, kNoIndex);
+    // A mirroring transform turns the winding around; undo it so normals stay
+    // outward (the corners' normals and texture coordinates follow their corners).
     const auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         if (mirrored) std::swap(b, c);
         mesh.triangles.push_back({base + a, base + b, base + c});
+        if (keep_normals) {
+            mesh.file_normal_triangles.push_back(normals.empty() ? Triangle{kNoIndex, kNoIndex, kNoIndex}
+                                                                 : Triangle{normal_base + a, normal_base + b, normal_base + c});
+        }
+        if (keep_texcoords) {
+            mesh.texcoord_triangles.push_back(texcoords.empty()
+                                                  ? Triangle{kNoIndex, kNoIndex, kNoIndex}
+                                                  : Triangle{texcoord_base + a, texcoord_base + b, texcoord_base + c});
+        }
+        if (keep_materials) mesh.face_materials.push_back(material.slot);
     };
     const std::size_t n = indices.size();
     if (mode == 4) {
@@ -288,9 +310,7 @@ std::vector<std::string_view> load_buffers(const json& document, std::string_vie
         const std::string uri = uri_value.get<std::string>();
         std::string_view data = bin;
         if (uri.rfind("data:", 0) == 0) {
-            const std::size_t comma = uri.find(";base64,");
-            if (comma == std::string::npos) gltf_fail(path, where + "/uri", "expected a base64 data URI");
-            decoded.push_back(decode_base64(std::string_view(uri).substr(comma + 8), path, where + "/uri"));
+            decoded.push_back(decode_data_uri(uri, path, where + "/uri"));
             data = decoded.back();
         } else if (!uri.empty()) {
             const std::filesystem::path folder = std::filesystem::path(path).parent_path();

@@ -189,3 +189,43 @@ Image read_image(const std::string& path) {
 }
 
 }  // namespace phongrast::io
+
+namespace phongrast::io {
+namespace {
+
+/// An RGB image's values as a three-channel stored image (read_image has
+/// already made grey r = g = b and dropped alpha, which is what textures need).
+StoredImage stored_from_rgb(const Image& image) {
+    StoredImage stored;
+    stored.rows = image.rows;
+    stored.columns = image.columns;
+    stored.channels = 3;
+    stored.values.resize(image.pixels.size() * 3);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) stored.values[3 * i + static_cast<std::size_t>(c)] = image.pixels[i][c];
+    }
+    return stored;
+}
+
+}  // namespace
+
+// Textures go through the same decoders as read_image (libspng, libjpeg-turbo,
+// OpenEXR, and OpenImageIO's module for the rest), so that reading a texture
+// never loads OpenImageIO for PNG, JPEG or EXR (docs/startup.md).
+StoredImage read_stored_image(const std::string& path) { return stored_from_rgb(read_image(path)); }
+
+StoredImage read_stored_image(std::string_view bytes, const std::string& name) {
+    // glTF embeds PNG and JPEG only (its core image types).
+    if (detail::looks_like_png(bytes.data(), bytes.size())) {
+        return stored_from_rgb(detail::decode_png(bytes.data(), bytes.size(), name));
+    }
+    if (detail::looks_like_jpeg(bytes.data(), bytes.size())) {
+        bool unsupported = false;
+        Image image = detail::decode_jpeg(bytes.data(), bytes.size(), name, unsupported);
+        if (unsupported) throw FileError(name + ": an embedded CMYK/YCCK JPEG is not supported; expected RGB or grey");
+        return stored_from_rgb(image);
+    }
+    throw FileError(name + ": embedded image is neither PNG nor JPEG (glTF's image types)");
+}
+
+}  // namespace phongrast::io

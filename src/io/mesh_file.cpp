@@ -87,6 +87,26 @@ MeshFile read_ply(const std::string& path) { return parse_ply(FileBytes::read(pa
 MeshFile read_stl(const std::string& path) { return parse_stl(FileBytes::read(path, "mesh").view(), path); }
 MeshFile read_gltf(const std::string& path) { return parse_gltf(FileBytes::read(path, "mesh").view(), path); }
 
+void warn_textured_faces_without_texcoords(MeshFile& file, const std::string& path) {
+    const Mesh& mesh = file.mesh;
+    if (mesh.face_materials.empty()) return;
+    std::size_t without = 0;
+    std::string example;
+    for (std::size_t t = 0; t < mesh.face_materials.size(); ++t) {
+        const std::uint32_t material = mesh.face_materials[t];
+        if (material == kNoIndex || !mesh.materials[material].texture) continue;
+        const bool has = t < mesh.texcoord_triangles.size() && mesh.texcoord_triangles[t][0] != kNoIndex &&
+                         mesh.texcoord_triangles[t][1] != kNoIndex && mesh.texcoord_triangles[t][2] != kNoIndex;
+        if (has) continue;
+        if (without++ == 0) example = mesh.materials[material].name;
+    }
+    if (without > 0) {
+        file.warnings.push_back(path + ": " + std::to_string(without) + " triangle" + (without == 1 ? "" : "s") +
+                                " with a textured material (" + example +
+                                ") have no texture coordinates; they draw with T = 1");
+    }
+}
+
 void check_mesh(const Mesh& mesh, const std::string& path) {
     try {
         validate_mesh(mesh);  // the core's own check: a last guard, each reader checks first

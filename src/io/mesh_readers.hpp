@@ -21,6 +21,10 @@ MeshFile parse_gltf(std::string_view bytes, const std::string& path);
 /// order of first appearance; the triangles index them.
 Mesh weld_corners(const std::vector<glm::dvec3>& corners);
 
+/// The contract's one warning for faces whose material has a texture but
+/// whose corners lack texture coordinates (they draw with T = 1).
+void warn_textured_faces_without_texcoords(MeshFile& file, const std::string& path);
+
 /// validate_mesh, its complaint as a FileError naming `path`.
 void check_mesh(const Mesh& mesh, const std::string& path);
 

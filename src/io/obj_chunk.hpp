@@ -1,5 +1,7 @@
 // One chunk of an OBJ file (whole lines) parsed and checked in one pass:
-// positions, colours, fan-triangulated faces and the material statements.
+// positions, colours, texture coordinates (`vt`), normals (`vn`),
+// fan-triangulated faces with their per-corner `vt`/`vn` indices, and the
+// material statements.
 // Chunks are parsed in parallel, so a face's indices cannot be resolved until
 // every chunk before it has counted its vertices: corners are kept tagged
 // (absolute, or relative to this chunk's vertices) and resolved afterwards.
@@ -13,14 +15,18 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace phongrast::io {
 
 /// A face corner: 2 x index for an absolute (1-based) index, 2 x r + 1 for a
 /// relative one, r being the 1-based index counted from this chunk's first
-/// vertex (zero or negative when it reaches into earlier chunks).
+/// vertex (zero or negative when it reaches into earlier chunks). `vt` and
+/// `vn` indices are tagged the same way, counted in their own lines; for
+/// them 0 (which no index gives) means "this corner has none".
 using TaggedCorner = std::int64_t;
+constexpr TaggedCorner kNoCorner = 0;
 
 /// `mtllib` or `usemtl`, with what followed it and where.
 struct ObjMaterialStatement {
@@ -28,6 +34,7 @@ struct ObjMaterialStatement {
     std::string argument;
     std::size_t line = 0;           ///< 1-based, within the chunk
     std::size_t faces_before = 0;   ///< faces of this chunk before the statement
+    std::size_t triangles_before = 0;  ///< and their triangles
 };
 
 struct ObjChunkError {
@@ -39,6 +46,13 @@ struct ObjChunk {
     std::vector<glm::dvec3> positions;  ///< one per `v` line (a bad one still counts, as 0)
     std::vector<glm::vec3> colors;      ///< one per `v` line, white without `r g b`
     std::vector<std::array<TaggedCorner, 3>> triangles;
+    std::vector<glm::vec2> texcoords;  ///< one per `vt` line: (u, v)
+    std::vector<glm::vec3> normals;    ///< one per `vn` line (a non-finite one as 0: "take the computed normal")
+    /// Per triangle, its corners' `vt` (and `vn`) indices, kNoCorner where a
+    /// corner has none; empty when no face of the chunk has any (a plain OBJ
+    /// pays nothing for them).
+    std::vector<std::array<TaggedCorner, 3>> texcoord_triangles;
+    std::vector<std::array<TaggedCorner, 3>> normal_triangles;
     std::vector<ObjMaterialStatement> materials;
     std::size_t newlines = 0;
     std::size_t faces = 0;
@@ -50,6 +64,10 @@ struct ObjChunk {
 struct ObjIndexRange {
     std::int64_t vertices_before = 0;  ///< `v` lines in the chunks before this one
     std::int64_t vertices_in_file = 0;
+    std::int64_t texcoords_before = 0;  ///< `vt` lines likewise
+    std::int64_t texcoords_in_file = 0;
+    std::int64_t normals_before = 0;  ///< `vn` lines likewise
+    std::int64_t normals_in_file = 0;
 };
 
 /// Parses `text` (whole lines). With `range`, also stops at the first index out

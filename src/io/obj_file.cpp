@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <algorithm>
 #include <limits>
 #include <sstream>
 
@@ -54,7 +55,13 @@ struct ChunkStarts {
     std::vector<std::int64_t> vertices;
     std::vector<std::size_t> faces;
     std::vector<std::size_t> triangles;
+    std::vector<std::int64_t> texcoords;
+    std::vector<std::int64_t> normals;
     std::int64_t vertices_in_file = 0;
+    std::int64_t texcoords_in_file = 0;
+    std::int64_t normals_in_file = 0;
+    bool any_texcoord_corner = false;
+    bool any_normal_corner = false;
     std::size_t faces_in_file = 0;
     std::size_t triangles_in_file = 0;
 };
@@ -67,7 +74,13 @@ ChunkStarts count_chunk_starts(const std::vector<ObjChunk>& chunks) {
         starts.vertices.push_back(starts.vertices_in_file);
         starts.faces.push_back(starts.faces_in_file);
         starts.triangles.push_back(starts.triangles_in_file);
+        starts.texcoords.push_back(starts.texcoords_in_file);
+        starts.normals.push_back(starts.normals_in_file);
         lines += chunk.newlines;
+        starts.texcoords_in_file += static_cast<std::int64_t>(chunk.texcoords.size());
+        starts.normals_in_file += static_cast<std::int64_t>(chunk.normals.size());
+        starts.any_texcoord_corner = starts.any_texcoord_corner || !chunk.texcoord_triangles.empty();
+        starts.any_normal_corner = starts.any_normal_corner || !chunk.normal_triangles.empty();
         starts.vertices_in_file += static_cast<std::int64_t>(chunk.positions.size());
         starts.faces_in_file += chunk.faces;
         starts.triangles_in_file += chunk.triangles.size();
@@ -75,14 +88,23 @@ ChunkStarts count_chunk_starts(const std::vector<ObjChunk>& chunks) {
     return starts;
 }
 
-bool corners_in_range(const ObjChunk& chunk, std::int64_t vertices_before, std::int64_t vertices_in_file) {
-    for (const auto& triangle : chunk.triangles) {
+/// True when every corner of `triangles` (kNoCorner aside) names one of the file's items.
+bool corners_in_range(const std::vector<std::array<TaggedCorner, 3>>& triangles, std::int64_t before,
+                      std::int64_t in_file) {
+    for (const auto& triangle : triangles) {
         for (const TaggedCorner corner : triangle) {
-            const std::int64_t vertex = resolve_corner(corner, vertices_before);
-            if (vertex < 1 || vertex > vertices_in_file) return false;
+            if (corner == kNoCorner) continue;  // only vt/vn corners are ever kNoCorner
+            const std::int64_t item = resolve_corner(corner, before);
+            if (item < 1 || item > in_file) return false;
         }
     }
     return true;
+}
+
+bool chunk_in_range(const ObjChunk& chunk, const ChunkStarts& starts, std::size_t i) {
+    return corners_in_range(chunk.triangles, starts.vertices[i], starts.vertices_in_file) &&
+           corners_in_range(chunk.texcoord_triangles, starts.texcoords[i], starts.texcoords_in_file) &&
+           corners_in_range(chunk.normal_triangles, starts.normals[i], starts.normals_in_file);
 }
 
 /// Throws the file's first error, in line order, as a sequential reader would:
@@ -92,12 +114,12 @@ void throw_first_error(const std::vector<std::string_view>& texts, const std::ve
                        const ChunkStarts& starts, const std::string& path) {
     std::vector<char> bad(chunks.size(), 0);
     for_each_chunk(chunks.size(), [&](std::size_t i) {
-        bad[i] = chunks[i].error.has_value() ||
-                 !corners_in_range(chunks[i], starts.vertices[i], starts.vertices_in_file);
+        bad[i] = chunks[i].error.has_value() || !chunk_in_range(chunks[i], starts, i);
     });
     for (std::size_t i = 0; i < chunks.size(); ++i) {
         if (!bad[i]) continue;
-        const ObjIndexRange range{starts.vertices[i], starts.vertices_in_file};
+        const ObjIndexRange range{starts.vertices[i],  starts.vertices_in_file, starts.texcoords[i],
+                                  starts.texcoords_in_file, starts.normals[i], starts.normals_in_file};
         const ObjChunk checked = parse_obj_chunk(texts[i], &range);
         const ObjChunkError error = checked.error.value_or(ObjChunkError{1, "unreadable face"});
         throw FileError(path + ":" + std::to_string(starts.lines[i] + error.line) + ": " + error.message);
@@ -105,9 +127,51 @@ void throw_first_error(const std::vector<std::string_view>& texts, const std::ve
     if (starts.faces_in_file == 0) {
         throw FileError(path + ": no faces ('f' lines); expected a mesh with at least one triangle");
     }
-    if (starts.vertices_in_file > std::numeric_limits<std::uint32_t>::max()) {
-        throw FileError(path + ": " + std::to_string(starts.vertices_in_file) +
-                        " vertices; expected at most 4294967295");
+    const std::pair<std::int64_t, const char*> counts[] = {{starts.vertices_in_file, " vertices"},
+                                                           {starts.texcoords_in_file, " texture coordinates"},
+                                                           {starts.normals_in_file, " normals"}};
+    for (const auto& [count, what] : counts) {
+        if (count >= std::int64_t(std::numeric_limits<std::uint32_t>::max())) {
+            throw FileError(path + ": " + std::to_string(count) + what + "; expected fewer than 4294967295");
+        }
+    }
+}
+
+/// `out` (one per triangle of the file) from the chunks' tagged `vt` or `vn`
+/// corners; chunks without any give kNoIndex corners.
+void resolve_corner_indices(std::vector<Triangle>& out, const std::vector<ObjChunk>& chunks, const ChunkStarts& starts,
+                            std::vector<std::array<TaggedCorner, 3>> ObjChunk::*per_corner,
+                            const std::vector<std::int64_t>& before) {
+    out.resize(starts.triangles_in_file);
+    for_each_chunk(chunks.size(), [&](std::size_t i) {
+        const auto& tagged = chunks[i].*per_corner;
+        Triangle* first = out.data() + starts.triangles[i];
+        if (tagged.empty()) {
+            std::fill(first, first + chunks[i].triangles.size(), Triangle{kNoIndex, kNoIndex, kNoIndex});
+            return;
+        }
+        for (const auto& triangle : tagged) {
+            for (int k = 0; k < 3; ++k) {
+                (*first)[k] = triangle[k] == kNoCorner
+                                  ? kNoIndex
+                                  : static_cast<std::uint32_t>(resolve_corner(triangle[k], before[i]) - 1);
+            }
+            ++first;
+        }
+    });
+}
+
+/// Texture coordinates and file normals, with their per-corner indices, when any face names them.
+void assemble_corner_attributes(Mesh& mesh, const std::vector<ObjChunk>& chunks, const ChunkStarts& starts) {
+    if (starts.any_texcoord_corner) {
+        mesh.texcoords.reserve(static_cast<std::size_t>(starts.texcoords_in_file));
+        for (const ObjChunk& chunk : chunks) mesh.texcoords.insert(mesh.texcoords.end(), chunk.texcoords.begin(), chunk.texcoords.end());
+        resolve_corner_indices(mesh.texcoord_triangles, chunks, starts, &ObjChunk::texcoord_triangles, starts.texcoords);
+    }
+    if (starts.any_normal_corner) {
+        mesh.file_normals.reserve(static_cast<std::size_t>(starts.normals_in_file));
+        for (const ObjChunk& chunk : chunks) mesh.file_normals.insert(mesh.file_normals.end(), chunk.normals.begin(), chunk.normals.end());
+        resolve_corner_indices(mesh.file_normal_triangles, chunks, starts, &ObjChunk::normal_triangles, starts.normals);
     }
 }
 
@@ -129,6 +193,7 @@ Mesh assemble_mesh(const std::vector<ObjChunk>& chunks, const ChunkStarts& start
             ++out;
         }
     });
+    assemble_corner_attributes(mesh, chunks, starts);
     return mesh;
 }
 
@@ -137,7 +202,8 @@ std::vector<ObjMaterialUse> material_uses(const std::vector<ObjChunk>& chunks, c
     for (std::size_t i = 0; i < chunks.size(); ++i) {
         for (const ObjMaterialStatement& statement : chunks[i].materials) {
             uses.push_back({statement.is_library, statement.argument, starts.lines[i] + statement.line,
-                            starts.faces[i] + statement.faces_before});
+                            starts.faces[i] + statement.faces_before,
+                            starts.triangles[i] + statement.triangles_before});
         }
     }
     return uses;
@@ -154,10 +220,13 @@ MeshFile parse_obj(std::string_view text, const std::string& path) {
 
     ObjFile result;
     result.mesh = assemble_mesh(chunks, starts);
-    ObjMaterialChoice material = choose_obj_material(material_uses(chunks, starts), starts.faces_in_file, path);
-    result.material = material.material;
-    result.material_name = std::move(material.name);
-    result.warnings = std::move(material.warnings);
+    ObjMaterials materials = read_obj_materials(material_uses(chunks, starts), starts.triangles_in_file, path);
+    result.mesh.materials = std::move(materials.materials);
+    result.mesh.face_materials = std::move(materials.face_materials);
+    result.material = materials.first;
+    result.material_name = std::move(materials.first_name);
+    result.warnings = std::move(materials.warnings);
+    warn_textured_faces_without_texcoords(result, path);
     check_mesh(result.mesh, path);
     return result;
 }

@@ -1,6 +1,6 @@
-// PLY bodies, ASCII or binary in either byte order: `vertex` x y z and optional
+// PLY bodies, ASCII or binary in either byte order: `vertex` x y z, optional
 // red green blue (uchar /255, other integers by their maximum, floats as they
-// are), `face` vertex_indices (or vertex_index) lists fanned into triangles;
+// are) and optional nx ny nz (the file's normals, per vertex), `face` vertex_indices (or vertex_index) lists fanned into triangles;
 // every other element and property is read past.
 #include <algorithm>
 #include <cmath>
@@ -188,15 +188,17 @@ private:
     }
 
     void read_vertices(const PlyElement& element) {
-        static const char* const names[] = {"x", "y", "z", "red", "green", "blue"};
+        static const char* const names[] = {"x", "y", "z", "red", "green", "blue", "nx", "ny", "nz"};
         std::vector<int> slots;
         bool colored = false;
+        bool has_normals = false;
         for (const PlyProperty& property : element.properties) {
             int slot = -1;
-            for (int i = 0; i < 6; ++i) {
+            for (int i = 0; i < 9; ++i) {
                 if (!property.is_list && property.name == names[i]) slot = i;
             }
-            colored = colored || slot >= 3;
+            colored = colored || (slot >= 3 && slot < 6);
+            has_normals = has_normals || slot >= 6;
             slots.push_back(slot);
         }
         for (int i = 0; i < 3; ++i) {
@@ -207,8 +209,9 @@ private:
         Mesh& mesh = file_.mesh;
         mesh.positions.reserve(element.count);
         mesh.colors.reserve(element.count);
+        if (has_normals) mesh.file_normals.reserve(element.count);
         for (index_ = 0; index_ < element.count; ++index_) {
-            double v[6] = {0, 0, 0, 1, 1, 1};
+            double v[9] = {0, 0, 0, 1, 1, 1, 0, 0, 0};
             for (std::size_t p = 0; p < slots.size(); ++p) {
                 const PlyProperty& property = element.properties[p];
                 if (slots[p] < 0) {
@@ -216,6 +219,10 @@ private:
                     continue;
                 }
                 const double read = value(property.type);
+                if (slots[p] >= 6) {  // a normal: a non-finite one takes the computed normal (the contract)
+                    v[slots[p]] = read;
+                    continue;
+                }
                 v[slots[p]] = slots[p] >= 3 ? read * color_scale(property.type) : read;
                 if (!std::isfinite(v[slots[p]])) fail(std::string(names[slots[p]]) + " is not a finite number");
                 if (slots[p] >= 3 && std::abs(v[slots[p]]) > std::numeric_limits<float>::max()) {
@@ -224,6 +231,11 @@ private:
             }
             mesh.positions.emplace_back(v[0], v[1], v[2]);
             mesh.colors.emplace_back(static_cast<float>(v[3]), static_cast<float>(v[4]), static_cast<float>(v[5]));
+            if (has_normals) {
+                const glm::vec3 n(static_cast<float>(v[6]), static_cast<float>(v[7]), static_cast<float>(v[8]));
+                const bool finite = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
+                mesh.file_normals.push_back(finite ? n : glm::vec3(0.0f));
+            }
         }
         if (!colored) mesh.colors.clear();
     }
@@ -293,6 +305,8 @@ MeshFile parse_ply(std::string_view bytes, const std::string& path) {
     if (file.mesh.positions.size() > std::numeric_limits<std::uint32_t>::max()) {
         throw FileError(path + ": more than 4294967295 vertices");
     }
+    // Normals per vertex: each corner takes its vertex's.
+    if (!file.mesh.file_normals.empty()) file.mesh.file_normal_triangles = file.mesh.triangles;
     check_mesh(file.mesh, path);
     return file;
 }

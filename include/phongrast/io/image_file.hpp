@@ -11,6 +11,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "phongrast/image.hpp"
 
@@ -50,6 +51,24 @@ void write_image(const Image& image, const std::string& path, const ImageWriteOp
 /// libraries, any other format OpenImageIO understands through OpenImageIO.
 /// Throws FileError.
 Image read_image(const std::string& path);
+
+/// An image's values as its file stores them (what textures need): 8-bit k
+/// becomes the float nearest k/255, 16-bit k the float nearest k/65535, half
+/// and float values as they are; no colour transform; grey gives equal r, g,
+/// b and alpha is dropped (so `channels` is 3). Row 0 is the top row.
+struct StoredImage {
+    int rows = 0;
+    int columns = 0;
+    int channels = 0;           ///< 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA, ...
+    std::vector<float> values;  ///< rows x columns x channels, row-major
+};
+
+/// Reads any image read_image reads (PNG, JPEG, EXR, others through OpenImageIO) as stored.
+/// Throws FileError naming the file and why.
+StoredImage read_stored_image(const std::string& path);
+/// The same for an image held in memory (embedded in a glTF file); `name`
+/// is for messages; PNG and JPEG (glTF's image types), told by their first bytes.
+StoredImage read_stored_image(std::string_view bytes, const std::string& name);
 
 }  // namespace phongrast::io
 

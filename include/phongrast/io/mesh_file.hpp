@@ -18,11 +18,17 @@
 namespace phongrast::io {
 
 struct MeshFile {
+    /// The mesh with what contract version 2 reads besides geometry: texture
+    /// coordinates and file normals per corner, a material per face (OBJ/MTL,
+    /// glTF), each texture's image loaded once per process (texture_file.hpp).
     Mesh mesh;
-    /// The material of the first face that names one (OBJ `usemtl`), if any.
+    /// The OBJ material of the first face that has one, as version 1 read it
+    /// (the MTL's fields, an absent Ka/Kd/Ks as 0 and Ns as 1), for callers
+    /// that use one material for the whole mesh; mesh.materials has them all.
     std::optional<PhongMaterial> material;
     std::string material_name;  ///< its name, for messages
-    /// Problems that do not stop the load (e.g. an MTL file that is missing), one per line.
+    /// Problems that do not stop the load (an MTL file or a texture that is
+    /// missing, an unknown material, ...), one per line, each naming the file.
     std::vector<std::string> warnings;
 };
 
