@@ -23,6 +23,7 @@ _Precision = Literal["single", "double"]
 _SamplePattern = Literal["ordered", "rotated"]
 _Overdraw = Literal["auto", "all", "visible"]
 _BackFaces = Literal["draw", "cull"]
+_TextureFilter = Literal["bilinear", "nearest", "trilinear"]
 
 class FileError(ValueError):
     """A file could not be read or written, or is malformed; the message names the file and the line or field."""
@@ -85,6 +86,7 @@ def render_object(
     sample_pattern: _SamplePattern = "ordered",
     overdraw: _Overdraw = "auto",
     back_faces: _BackFaces = "draw",
+    texture_filter: _TextureFilter = "bilinear",
     aovs: str = "",
     progress: _Progress = None,
 ) -> _Image: ...
@@ -115,10 +117,56 @@ def shade_phong(
 
 # The Pythonic layer.
 
+class Texture:
+    """A texture map: (rows, columns, 3) float texels (row 0 the top row) and its wrap modes."""
+    def __init__(self, texels: _ArrayLike, wrap_s: str = "repeat", wrap_t: str = "repeat") -> None: ...
+    @staticmethod
+    def load(path: str, wrap_s: str = "repeat", wrap_t: str = "repeat") -> Texture: ...
+    @property
+    def size(self) -> tuple[int, int]: ...
+    @property
+    def wrap(self) -> tuple[str, str]: ...
+    def sample(self, s: float, t: float) -> tuple[float, float, float]: ...
+
+class Material:
+    """A face material: the coefficients it sets, a texture and glTF's colour factor."""
+    def __init__(
+        self,
+        ka: float | _ArrayLike | None = None,
+        kd: float | _ArrayLike | None = None,
+        ks: float | _ArrayLike | None = None,
+        n: float | None = None,
+        texture: Texture | None = None,
+        color_factor: _ArrayLike | None = None,
+        name: str = "",
+    ) -> None: ...
+    @property
+    def fields(self) -> dict[str, Any]: ...
+    @property
+    def has_texture(self) -> bool: ...
+    @property
+    def name(self) -> str: ...
+
 class Mesh:
-    def __init__(self, vertices: _ArrayLike, faces: _ArrayLike, colors: _ArrayLike | None = None) -> None: ...
+    def __init__(
+        self,
+        vertices: _ArrayLike,
+        faces: _ArrayLike,
+        colors: _ArrayLike | None = None,
+        texcoords: _ArrayLike | None = None,
+        normals: _ArrayLike | None = None,
+        material: Material | None = None,
+        materials: Sequence[Material] | None = None,
+        face_materials: _ArrayLike | None = None,
+    ) -> None: ...
     @staticmethod
     def load(path: str) -> Mesh: ...
+    @property
+    def has_texcoords(self) -> bool: ...
+    @property
+    def has_normals(self) -> bool: ...
+    @property
+    def material_count(self) -> int: ...
     def save(self, path: str) -> None: ...
     @property
     def positions(self) -> npt.NDArray[np.float64]: ...
@@ -192,6 +240,13 @@ class Scene:
     @mesh.setter
     def mesh(self, value: Mesh) -> None: ...
     @property
+    def objects(self) -> list[dict[str, Any]]: ...
+    @property
+    def normals(self) -> str: ...
+    @normals.setter
+    def normals(self, value: str) -> None: ...
+    def frame(self, rows: int | None = None, columns: int | None = None) -> None: ...
+    @property
     def warnings(self) -> list[str]: ...
 
 @overload
@@ -206,6 +261,7 @@ def render(
     sample_pattern: _SamplePattern = "ordered",
     overdraw: _Overdraw = "auto",
     back_faces: _BackFaces = "draw",
+    texture_filter: _TextureFilter = "bilinear",
     progress: _Progress = None,
 ) -> tuple[_Image, _Stats]: ...
 @overload
@@ -221,6 +277,7 @@ def render(
     sample_pattern: _SamplePattern = "ordered",
     overdraw: _Overdraw = "auto",
     back_faces: _BackFaces = "draw",
+    texture_filter: _TextureFilter = "bilinear",
     progress: _Progress = None,
 ) -> tuple[_Image, _Stats, _Planes]: ...
 
@@ -236,6 +293,7 @@ class Renderer:
         sample_pattern: _SamplePattern = "ordered",
         overdraw: _Overdraw = "auto",
         back_faces: _BackFaces = "draw",
+    texture_filter: _TextureFilter = "bilinear",
         aovs: str = "",
         progress: _Progress = None,
     ) -> None: ...

@@ -43,7 +43,8 @@ def test_inspect_signature_works_on_functions(name):
 
 
 def test_inspect_signature_works_on_classes_and_methods():
-    assert list(inspect.signature(phongrast.Mesh).parameters) == ["vertices", "faces", "colors"]
+    assert list(inspect.signature(phongrast.Mesh).parameters) == ["vertices", "faces", "colors", "texcoords", "normals",
+                                                                  "material", "materials", "face_materials"]
     assert list(inspect.signature(phongrast.Scene.from_mesh).parameters) == ["mesh", "rows", "columns"]
     assert list(inspect.signature(phongrast.Mesh.load).parameters) == ["path"]
     assert "scene" in inspect.signature(phongrast.Renderer.render).parameters
