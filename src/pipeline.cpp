@@ -45,7 +45,8 @@ void prepare_textures(const AssembledScene& assembled, const RenderOptions& opti
     }
 }
 
-/// (s, t) of each vertex into its `lit`, which Phong and flat do not otherwise read.
+/// (s, t) of each vertex into its `lit`, which Phong and flat do not otherwise
+/// read and textured Gouraud leaves to (s, t) (its A and S live elsewhere).
 template <typename Real>
 void put_texcoords_in_lit(const AssembledScene& assembled, FrameMemory<Real>& memory) {
     std::vector<Varyings<Real>>& varyings = memory.vertices.varyings;
