@@ -650,3 +650,35 @@ TEST_CASE("textured Gouraud through the near plane: T at the interpolated (s, t)
     CHECK(wrong == 0);
     CHECK(specular_seen > 0.01);
 }
+
+TEST_CASE("textured Gouraud: a face without texture coordinates keeps the untextured picture, its neighbour is textured") {
+    const TextureMap map = map_of(numbered_texture(3, 3), TextureWrap::repeat, TextureWrap::repeat);
+    const glm::vec2 st[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
+    const int size = 12;
+    Scene scene = lit_gouraud_quad(map, st, size);
+    scene.mesh.texcoord_triangles[1][2] = kNoIndex;  // triangle 1 (upper left) draws with T = 1
+    const Scene plain = untextured(scene);
+    for (bool seed : {false, true}) {
+        RenderOptions options = seed ? RenderOptions::seed() : RenderOptions::exact();
+        options.aovs.id = true;
+        const RenderResult result = render(scene, options);
+        const Image reference = render(plain, options).image;
+        INFO((seed ? "seed" : "exact"));
+        int untextured_pixels = 0, textured_apart = 0;
+        double largest = 0.0;
+        for (std::size_t p = 0; p < result.image.pixels.size(); ++p) {
+            const glm::dvec3 difference = glm::abs(glm::dvec3(result.image.pixels[p]) - glm::dvec3(reference.pixels[p]));
+            const double most = std::max(difference.x, std::max(difference.y, difference.z));
+            if (result.aovs.id[p] == 1) {
+                ++untextured_pixels;
+                largest = std::max(largest, most);
+            } else if (most > 0.01) {
+                ++textured_apart;
+            }
+        }
+        CHECK(untextured_pixels > size * size / 3);
+        // The same lighting at the same corners: the untextured picture, up to float rounding (see above).
+        CHECK(largest <= 2.5e-7);
+        CHECK(textured_apart > size * size / 3);
+    }
+}
