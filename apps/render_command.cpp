@@ -49,7 +49,7 @@ int run_render(const RenderCommand& command) {
     PreparedScene prepared = prepare_scene(command.scene, messages);
     // Extra outputs only fit an EXR: without -o they go to NAME.exr.
     const std::string output =
-        choose_output(command.scene.output, prepared.name + (command.aovs.empty() ? ".png" : ".exr"));
+        choose_output(command.scene.output, prepared.name + (command.aovs.empty() ? ".png" : ".exr"), messages);
     const io::ImageFormat format = io::image_format_for(output);
     if (!command.aovs.empty()) {
         try {

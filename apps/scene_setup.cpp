@@ -43,7 +43,7 @@ std::string find_default_scene() {
                         " (give a scene file or a mesh: phongrast render SCENE.json)");
 }
 
-std::string choose_output(const std::string& output, const std::string& default_name) {
+std::string choose_output(const std::string& output, const std::string& default_name, const Messages& messages) {
     const std::string path = output.empty() ? default_name : output;
     io::image_format_for(path);  // an unknown extension is an error before any rendering
     const fs::path folder = fs::path(path).parent_path();
@@ -53,6 +53,9 @@ std::string choose_output(const std::string& output, const std::string& default_
     }
     // Refused now, not after the render, when the rename would fail.
     if (fs::is_directory(path, error)) throw io::FileError(path + ": is a folder; expected an image file name");
+    if (output.empty() && fs::exists(path, error)) {
+        messages.warning("replacing " + path + ", the default output name for this input (-o names another file)");
+    }
     return path;
 }
 

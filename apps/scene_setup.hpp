@@ -36,8 +36,10 @@ PreparedScene prepare_scene_text(const std::string& text, const std::string& nam
                                  const SceneFlags& flags, const Messages& messages);
 
 /// `output` if given, else NAME + suffix in the current folder. Checks the
-/// extension and that the folder exists, before anything is rendered.
-std::string choose_output(const std::string& output, const std::string& default_name);
+/// extension and that the folder exists, before anything is rendered. A
+/// default name that is already a file is replaced with a warning, so that
+/// `render dog.ply` then `render dog.glb` do not overwrite dog.png silently.
+std::string choose_output(const std::string& output, const std::string& default_name, const Messages& messages);
 
 }  // namespace phongrast::cli
 

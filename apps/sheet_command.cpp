@@ -49,7 +49,7 @@ void add_sheet_command(CLI::App& app, SheetCommand& command) {
 int run_sheet(const SheetCommand& command) {
     const Messages messages(command.scene.quiet);
     PreparedScene prepared = prepare_scene(command.scene, messages);
-    const std::string output = choose_output(command.scene.output, prepared.name + "-sheet.png");
+    const std::string output = choose_output(command.scene.output, prepared.name + "-sheet.png", messages);
     std::string extension = std::filesystem::path(output).extension().string();
     if (!command.figures_folder.empty()) {
         std::error_code error;

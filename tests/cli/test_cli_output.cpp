@@ -143,6 +143,21 @@ TEST_CASE("a scene naming a PLY mesh, and a GLB given alone, render as their OBJ
     CHECK(std::count(framed.pixels.begin(), framed.pixels.end(), glm::vec3(1.0f)) < 32 * 24);  // the triangle shows
 }
 
+TEST_CASE("without -o, a default output name that is already a file is replaced with a warning, not silently") {
+    TemporaryFolder folder;
+    // Two inputs with one name (triangle.obj, triangle.glb) both default to triangle.png.
+    const Run first = run_cli(folder, "render '" + data_folder + "/triangle.obj' --size 16x16");
+    REQUIRE(first.status == 0);
+    CHECK(first.err.find("replacing") == std::string::npos);
+    const Run second = run_cli(folder, "render '" + data_folder + "/triangle.glb' --size 16x16");
+    REQUIRE(second.status == 0);
+    CHECK(second.err.find("replacing triangle.png, the default output name for this input") != std::string::npos);
+    // An explicit -o is the user's choice: no warning.
+    const Run named = run_cli(folder, "render '" + data_folder + "/triangle.glb' --size 16x16 -o triangle.png");
+    REQUIRE(named.status == 0);
+    CHECK(named.err.find("replacing") == std::string::npos);
+}
+
 TEST_CASE("sheet writes the 4x2 grid and, with --figures, the eight figures") {
     TemporaryFolder folder;
     std::filesystem::create_directories(folder.file("figures"));
