@@ -53,7 +53,9 @@ std::vector<glm::vec3> serial_normals(const std::vector<glm::dvec3>& positions, 
 }
 
 bool same_bits(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
+    // memcmp of two empty vectors would pass null pointers (undefined behaviour): compare sizes first.
+    if (a.size() != b.size()) return false;
+    return a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
 }
 
 /// An icosphere (72,000 triangles: several parallel ranges) with its faces and vertices shuffled,
