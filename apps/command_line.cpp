@@ -33,6 +33,26 @@ void add_scene_flags(CLI::App& command, SceneFlags& flags, const std::string& ou
     command.add_option("--up", flags.up, "Camera up direction x,y,z")->expected(3)->delimiter(',');
     command.add_option("--focal", flags.focal, "Focal distance (world units)")->check(CLI::PositiveNumber);
     command.add_option("--sensor", flags.sensor, "Image plane size H,W (world units)")->expected(2)->delimiter(',');
+    command.add_option("--camera", flags.camera_file,
+                       "Camera JSON file replacing the scene's camera: a scene's \"camera\" object (look-at, OpenCV "
+                       "or orthographic), or a file with a \"camera\" field (--camera-out writes one)");
+    command.add_option("--projection", flags.projection,
+                       "perspective (the look-at camera) or orthographic (eye, lookat, up, sensor; focal unused)")
+        ->check(CLI::IsMember({"perspective", "orthographic"}));
+    command.add_option("--K", flags.K,
+                       "OpenCV intrinsics fx,fy,cx,cy[,skew] in pixels (OpenCV's pixel centres at whole numbers). "
+                       "Without a pose flag the pose is the look-at camera's")
+        ->expected(4, 5)
+        ->delimiter(',');
+    command.add_option("--world-to-camera", flags.world_to_camera,
+                       "OpenCV pose [R | t], 12 or 16 numbers row by row (x right, y down, z forward). Without --K, "
+                       "K is the look-at camera's")
+        ->expected(12, 16)
+        ->delimiter(',');
+    command.add_option("--camera-to-world", flags.camera_to_world,
+                       "The inverse pose, 12 or 16 numbers row by row (OpenCV axes)")
+        ->expected(12, 16)
+        ->delimiter(',');
     // A range with a small maximum: CLI::NonNegativeNumber's message would print the largest double in full.
     command.add_option("--threads", flags.threads,
                        "Worker threads; 0 = all cores, more than the machine has are clamped (the picture does not change)")

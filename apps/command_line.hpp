@@ -28,6 +28,12 @@ struct SceneFlags {
     std::string size;  ///< "WxH"
     std::vector<double> eye, lookat, up, sensor;
     double focal = 0.0;
+    /// The contract's other cameras (docs/scene-format.md, "Camera"):
+    std::string camera_file;      ///< --camera: a camera JSON replacing the scene's camera
+    std::string projection;       ///< --projection perspective|orthographic (look-at fields)
+    std::vector<double> K;        ///< --K fx,fy,cx,cy[,skew]
+    std::vector<double> world_to_camera;  ///< --world-to-camera: 12 or 16 numbers, row by row
+    std::vector<double> camera_to_world;  ///< --camera-to-world: the same, inverted
     int threads = 0;
     int samples = 1;
     std::string smooth = "index";  ///< which corners share a normal: "index" (the contract) or "position"

@@ -1,6 +1,8 @@
 #include "scene_setup.hpp"
 
+#include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <sstream>
 
 #include "phongrast/camera.hpp"
@@ -19,6 +21,101 @@ namespace {
 namespace fs = std::filesystem;
 
 glm::dvec3 to_vector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
+
+/// A pose flag's 12 or 16 numbers, row by row, as [R | t] (a 4th row must be 0,0,0,1).
+Matrix3x4 pose_from_flag(const std::vector<double>& numbers, const std::string& flag) {
+    if (numbers.size() != 12 && numbers.size() != 16) {
+        throw std::invalid_argument(flag + ": expected 12 or 16 numbers (3 or 4 rows of 4, row by row), got " +
+                                    std::to_string(numbers.size()));
+    }
+    if (numbers.size() == 16 && !(numbers[12] == 0.0 && numbers[13] == 0.0 && numbers[14] == 0.0 && numbers[15] == 1.0)) {
+        throw std::invalid_argument(flag + ": expected the last row 0,0,0,1");
+    }
+    Matrix3x4 pose{};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 4; ++j) pose[i][j] = numbers[static_cast<std::size_t>(i * 4 + j)];
+    }
+    return pose;
+}
+
+/// --camera, --projection, the look-at flags, then --K and the pose flags.
+void apply_camera_flags(Scene& scene, const SceneFlags& flags, const Messages& messages) {
+    Camera& camera = scene.camera;
+    if (!flags.camera_file.empty()) {
+        std::vector<std::string> warnings;
+        camera = io::read_camera_file(flags.camera_file, &warnings);
+        for (const std::string& warning : warnings) messages.warning(warning);
+    }
+    const bool look_at_flags = !flags.eye.empty() || !flags.lookat.empty() || !flags.up.empty() || flags.focal > 0.0 ||
+                               !flags.sensor.empty();
+    const bool opencv_flags = !flags.K.empty() || !flags.world_to_camera.empty() || !flags.camera_to_world.empty();
+    if (!flags.world_to_camera.empty() && !flags.camera_to_world.empty()) {
+        throw std::invalid_argument("--world-to-camera, --camera-to-world: give one of the two, not both");
+    }
+    if (opencv_flags && look_at_flags) {
+        throw std::invalid_argument("--K/--world-to-camera/--camera-to-world and --eye/--lookat/--up/--focal/--sensor: "
+                                    "an OpenCV camera is placed by its matrices; give one kind of camera flags");
+    }
+    if (!flags.projection.empty()) {
+        const bool orthographic = flags.projection == "orthographic";
+        if (camera.model == CameraModel::opencv || opencv_flags) {
+            if (orthographic) {
+                throw std::invalid_argument("--projection orthographic: an OpenCV camera (K) is a perspective camera; "
+                                            "an orthographic one is given by --eye, --lookat, --up and --sensor");
+            }
+        } else {
+            camera.model = orthographic ? CameraModel::orthographic : CameraModel::look_at;
+        }
+    }
+    if (look_at_flags && camera.model == CameraModel::opencv) {
+        throw std::invalid_argument("--eye/--lookat/--up/--focal/--sensor: the camera is an OpenCV camera (K), placed "
+                                    "by its matrices; use --K and --world-to-camera, or --camera");
+    }
+    if (!flags.eye.empty()) camera.eye = to_vector(flags.eye);
+    if (!flags.lookat.empty()) camera.lookat = to_vector(flags.lookat);
+    if (!flags.up.empty()) camera.up = to_vector(flags.up);
+    if (flags.focal > 0.0) camera.focal = flags.focal;
+    if (!flags.sensor.empty()) {
+        camera.sensor_height = flags.sensor[0];
+        camera.sensor_width = flags.sensor[1];
+    }
+    if (!opencv_flags) return;
+
+    // What the flags do not give comes from the scene's camera (its OpenCV form for a look-at one).
+    OpenCvCamera cv;
+    try {
+        cv = opencv_form(camera, scene.image.rows, scene.image.columns);
+    } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument(std::string("--K/--world-to-camera: the scene's camera: ") + error.what());
+    }
+    if (!flags.K.empty()) {
+        if (flags.K.size() != 4 && flags.K.size() != 5) {
+            throw std::invalid_argument("--K: expected fx,fy,cx,cy or fx,fy,cx,cy,skew, got " +
+                                        std::to_string(flags.K.size()) + " numbers");
+        }
+        for (std::size_t i = 0; i < 2; ++i) {
+            if (!(flags.K[i] > 0.0) || !std::isfinite(flags.K[i])) {
+                throw std::invalid_argument(std::string("--K: ") + (i == 0 ? "fx" : "fy") +
+                                            " must be a positive finite number of pixels, got " +
+                                            std::to_string(flags.K[i]));
+            }
+        }
+        cv.fx = flags.K[0];
+        cv.fy = flags.K[1];
+        cv.cx = flags.K[2];
+        cv.cy = flags.K[3];
+        cv.skew = flags.K.size() == 5 ? flags.K[4] : 0.0;
+    }
+    if (!flags.world_to_camera.empty()) {
+        cv.world_to_camera = pose_from_flag(flags.world_to_camera, "--world-to-camera");
+        validate_pose(cv.world_to_camera, "--world-to-camera");
+    }
+    if (!flags.camera_to_world.empty()) {
+        cv.world_to_camera = invert_pose(pose_from_flag(flags.camera_to_world, "--camera-to-world"), "--camera-to-world");
+    }
+    camera.model = CameraModel::opencv;
+    camera.opencv = cv;
+}
 
 }  // namespace
 
@@ -111,14 +208,7 @@ void apply_flags(PreparedScene& prepared, const SceneFlags& flags, const Message
 
     if (!flags.shader.empty()) scene.shader = parse_shader(flags.shader);
     if (!flags.lighting.empty()) scene.lighting = parse_lighting(flags.lighting);
-    if (!flags.eye.empty()) scene.camera.eye = to_vector(flags.eye);
-    if (!flags.lookat.empty()) scene.camera.lookat = to_vector(flags.lookat);
-    if (!flags.up.empty()) scene.camera.up = to_vector(flags.up);
-    if (flags.focal > 0.0) scene.camera.focal = flags.focal;
-    if (!flags.sensor.empty()) {
-        scene.camera.sensor_height = flags.sensor[0];
-        scene.camera.sensor_width = flags.sensor[1];
-    }
+    apply_camera_flags(scene, flags, messages);
     const NormalOptions normals = normal_options(flags);
     if (!normals.is_contract()) {
         if (!scene.objects.empty()) {

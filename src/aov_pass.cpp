@@ -54,9 +54,10 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
             const Real fill_depth = sample_weights<Real, Perspective>(draw, q, dq, k, w);
             if (in.depth_buffer != nullptr && !(fill_depth == in.depth_buffer[index])) continue;
             if (planes.depth) {
-                // The surface's true depth: perspective-correct whatever the shading's weights.
+                // The surface's true depth: perspective-correct whatever the shading's weights
+                // (an orthographic camera's depth is affine in screen space: the fill's).
                 Real surface_depth = fill_depth;
-                if constexpr (!Perspective) {
+                if (!Perspective && in.frame->perspective()) {
                     Real sum = Real(0);
                     for (int i = 0; i < 3; ++i) sum += (static_cast<Real>(e[i]) + static_cast<Real>(step[i]) *
                                                         static_cast<Real>(k)) * inverse_area * inverse_depth[i];

@@ -24,7 +24,9 @@ template <typename Real>
 HiddenBackFaces back_faces_to_cull(const Scene& scene, const RenderOptions& options, const View& view,
                                    const TransformedVertices<Real>& vertices) {
     if (options.back_faces != BackFaces::cull_when_hidden) return HiddenBackFaces::unknown;
-    const HiddenBackFaces hidden = find_hidden_back_faces(scene.mesh, scene.camera.eye);
+    // An orthographic viewer is at infinity, not at a point: not worked out, every face is drawn.
+    if (!view.frame.perspective()) return HiddenBackFaces::unknown;
+    const HiddenBackFaces hidden = find_hidden_back_faces(scene.mesh, view.frame.eye);
     if (hidden == HiddenBackFaces::unknown || front_faces_may_be_cut(options, view, vertices)) {
         return HiddenBackFaces::unknown;
     }

@@ -7,6 +7,7 @@
 
 #include "prefetch.hpp"
 #include "term_counts.hpp"
+#include "view.hpp"
 
 namespace phongrast::detail {
 namespace {
@@ -96,7 +97,7 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     KernelChoice choice;
     choice.phong = scene.shader == Shader::phong;
     choice.flat = scene.shader == Shader::flat;
-    choice.perspective = options.interpolation == Interpolation::perspective_correct;
+    choice.perspective = perspective_weights(scene, options);
     choice.specialized = options.specialize_effects;
     choice.per_sample_vectors = options.light_vectors == LightVectors::shaded_point;
     choice.uniform_color = plan.setup.uniform_color;

@@ -309,7 +309,7 @@ void fill_phong(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightV
                 const FillSetup<Real>& setup) {
     constexpr bool kNormals = Diffuse || Specular;
     const LightRig<Real>& rig = setup.rig_of(draw);
-    if constexpr (kNormals && !PerSampleVectors) vectors.compute(rig.active_lights, draw.centroid(), Specular);
+    if constexpr (kNormals && !PerSampleVectors) vectors.compute(rig.active_lights, draw.centroid(), Specular, rig.eye_at_infinity);
     const FixedTerms<Ambient, Diffuse, Specular> terms;
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
         shade_phong_samples<Real, PerSampleVectors, UniformColor>(draw, n, w, terms, rig.active_lights, vectors, setup,
@@ -347,7 +347,7 @@ template <typename Real, bool Perspective, bool PerSampleVectors, bool Textured 
 void fill_phong_general(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
                         const FillSetup<Real>& setup) {
     const LightRig<Real>& rig = setup.rig_of(draw);
-    if (!PerSampleVectors) vectors.compute(rig.lights, draw.centroid(), true);
+    if (!PerSampleVectors) vectors.compute(rig.lights, draw.centroid(), true, rig.eye_at_infinity);
     std::conditional_t<Textured, SelectedTexturedTerms, SelectedTerms> terms;
     terms.lighting = rig.lighting;
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {

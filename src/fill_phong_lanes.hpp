@@ -202,7 +202,8 @@ PHONGRAST_FILL_INLINE void shade_ambient_lanes(const DrawTriangle<Real>& draw, i
 template <typename Real, bool PerSampleVectors, typename Terms>
 PHONGRAST_FILL_INLINE void surface_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w,
                                          const Terms& terms, const LightVectorsAt<Real>& vectors,
-                                         Lanes<Real>* normal, Lanes<Real>* point, Lanes<Real>* eye) {
+                                         bool eye_at_infinity, Lanes<Real>* normal, Lanes<Real>* point,
+                                         Lanes<Real>* eye) {
     for (int c = 0; c < 3; ++c) {
         interpolate_lanes(n, w, draw.v[0]->normal[c], draw.v[1]->normal[c], draw.v[2]->normal[c], normal[c]);
     }
@@ -211,7 +212,11 @@ PHONGRAST_FILL_INLINE void surface_lanes(const DrawTriangle<Real>& draw, int n, 
         for (int c = 0; c < 3; ++c) {
             interpolate_lanes(n, w, draw.v[0]->position[c], draw.v[1]->position[c], draw.v[2]->position[c], point[c]);
         }
-        if (terms.specular()) {
+        if (terms.specular() && eye_at_infinity) {
+            for (int c = 0; c < 3; ++c) {
+                for (int l = 0; l < n; ++l) eye[c][l] = kEyeAtInfinity<Real>[c];  // orthographic: V = -f
+            }
+        } else if (terms.specular()) {
             for (int c = 0; c < 3; ++c) {
                 for (int l = 0; l < n; ++l) eye[c][l] = -point[c][l];
             }
@@ -293,7 +298,8 @@ void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>*
     shade_ambient_lanes<Real, UniformColor>(draw, n, w, terms, setup, color, out);
     if (!(terms.diffuse() || terms.specular()) || lights.empty()) return;
     Lanes<Real> normal[3], point[3], eye[3] = {};
-    surface_lanes<Real, PerSampleVectors>(draw, n, w, terms, vectors, normal, point, eye);
+    surface_lanes<Real, PerSampleVectors>(draw, n, w, terms, vectors, setup.rig_of(draw).eye_at_infinity, normal,
+                                          point, eye);
     for (std::size_t k = 0; k < lights.size(); ++k) {
         add_light_lanes<Real, PerSampleVectors>(n, k, terms, lights, vectors, setup.rig_of(draw), normal, point, eye, color,
                                                 out);

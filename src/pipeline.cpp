@@ -6,6 +6,7 @@
 #include "back_faces.hpp"
 #include "scene_analysis.hpp"
 #include "term_counts.hpp"
+#include "view.hpp"
 
 namespace phongrast::detail {
 
@@ -83,13 +84,15 @@ template <typename Real>
 void render_pass(const Scene& scene, const AssembledScene* assembled, const RenderOptions& options, int rows,
                  int columns, glm::dvec2 sample_offset, FrameMemory<Real>& memory, RenderStats& stats,
                  const PassOutput& out, ProgressMonitor& progress) {
-    const View view(scene.camera, rows, columns, sample_offset);
+    // Passes are the image's size or a whole multiple of it (supersampling).
+    View view(scene.camera, rows, columns, sample_offset, std::max(1, rows / scene.image.rows));
     const EffectSet effects = find_effects(scene);
     stats.effects = effects;
 
     // Vertex stage.
     const bool need_normals = effects.normals || !options.specialize_effects || out.aov_planes.normal;
     transform_vertices(scene.mesh, view, need_normals, memory.vertex_stage, memory.vertices, progress);
+    place_near_plane(view, memory.vertices.screen);
     const HiddenBackFaces cull = back_faces_to_cull(scene, options, view, memory.vertices);
     stats.back_faces_culled = cull != HiddenBackFaces::unknown;
     build_light_rig(scene, view.frame, memory.rig);
@@ -147,7 +150,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     if (out.aov_planes.any()) {
         out.aovs.reset(rows, columns, out.aov_planes);
         const AovPassInput<Real> aov_input{&memory.bins, scene.shader,
-                                           options.interpolation == Interpolation::perspective_correct,
+                                           perspective_weights(scene, options),
                                            fill_plan.depth_test ? memory.fill.depth_buffer.data() : nullptr,
                                            &scene.mesh.triangles, &memory.vertices.varyings, &view.frame,
                                            texcoords_in_lit, out.original_triangle};

@@ -37,7 +37,14 @@ struct LightRig {
     Vec3<Real> ambient_factor{Real(0)};            ///< ka * Ia, the same product ambient_term forms
     PhongMaterial material;
     Lighting lighting;
+    /// An orthographic camera's viewer is at infinity: V = -f, (0, 0, -1) in
+    /// camera space, at every point (docs/scene-format.md, "Orthographic").
+    bool eye_at_infinity = false;
 };
+
+/// V of an orthographic camera, in camera space.
+template <typename Real>
+inline const Vec3<Real> kEyeAtInfinity{Real(0), Real(0), Real(-1)};
 
 /// Unit vectors from a point to each light and to the eye.
 template <typename Real>
@@ -45,12 +52,16 @@ struct LightVectorsAt {
     std::vector<Vec3<Real>> to_light;
     Vec3<Real> to_eye{Real(0)};
 
-    void compute(const std::vector<CameraLight<Real>>& lights, const Vec3<Real>& point, bool need_eye) {
+    void compute(const std::vector<CameraLight<Real>>& lights, const Vec3<Real>& point, bool need_eye,
+                 bool eye_at_infinity) {
         to_light.resize(lights.size());
         for (std::size_t k = 0; k < lights.size(); ++k) {
             to_light[k] = safe_normalize<Real>(lights[k].position - point);
         }
-        if (need_eye) to_eye = safe_normalize<Real>(-point);  // the eye is the camera-space origin
+        if (need_eye) {
+            // The eye is the camera-space origin, or at infinity behind it.
+            to_eye = eye_at_infinity ? kEyeAtInfinity<Real> : safe_normalize<Real>(-point);
+        }
     }
 };
 
@@ -114,9 +125,9 @@ struct PointShader {
     /// they light several points there (a triangle's corners lit at its centroid).
     void compute_vectors(LightVectorsAt<Real>& vectors, const Vec3<Real>& vector_origin) const {
         if (!specialized) {
-            vectors.compute(rig->lights, vector_origin, true);
+            vectors.compute(rig->lights, vector_origin, true, rig->eye_at_infinity);
         } else if (effects.normals) {
-            vectors.compute(rig->active_lights, vector_origin, effects.specular);
+            vectors.compute(rig->active_lights, vector_origin, effects.specular, rig->eye_at_infinity);
         }
     }
 

@@ -47,7 +47,7 @@ public:
         source_ = source;
         surface_ = in_.triangle_surfaces != nullptr ? in_.triangle_surfaces[source] : 0;
         const Triangle& tri = in_.scene.mesh.triangles[source];
-        if (in_.cull != HiddenBackFaces::unknown && faces_away(in_.scene.mesh, in_.scene.camera.eye, in_.cull, tri)) {
+        if (in_.cull != HiddenBackFaces::unknown && faces_away(in_.scene.mesh, in_.view.frame.eye, in_.cull, tri)) {
             ++counts_.culled;
             return;
         }
@@ -204,7 +204,7 @@ private:
                                           &polygon.vertices[2].varyings};
             counts_.lit_points += light_corners(corners, centroid);
         }
-        const bool perspective = in_.options.interpolation == Interpolation::perspective_correct;
+        const bool perspective = perspective_weights(in_.scene, in_.options);
         const ClipOutcome clipped = clip_to_view(polygon, in_.view, perspective);
         if (clipped != ClipOutcome::kept) return clipped;
         draw_fan(polygon, centroid, outcome);

@@ -40,6 +40,13 @@ void require_finite(const glm::vec3& value, const char* field) {
     if (!all_finite(value)) throw std::invalid_argument(std::string(field) + ": expected finite numbers");
 }
 
+void require_finite_camera_number(double value, const char* field) {
+    if (!std::isfinite(value)) {
+        throw std::invalid_argument(std::string("camera.") + field + ": expected a finite number, got " +
+                                    std::to_string(value));
+    }
+}
+
 void require_positive_finite(double value, const char* field) {
     if (!(value > 0.0) || !std::isfinite(value)) {
         throw std::invalid_argument(std::string("camera.") + field + ": expected a positive finite number, got " +
@@ -169,10 +176,28 @@ void validate_mesh(const Mesh& mesh, const glm::dvec3& colour_limit,
 }
 
 void validate_camera(const Camera& camera) {
+    switch (camera.model) {
+        case CameraModel::look_at:
+        case CameraModel::orthographic:
+            break;
+        case CameraModel::opencv: {
+            const OpenCvCamera& cv = camera.opencv;
+            require_positive_finite(cv.fx, "opencv.fx");
+            require_positive_finite(cv.fy, "opencv.fy");
+            require_finite_camera_number(cv.cx, "opencv.cx");
+            require_finite_camera_number(cv.cy, "opencv.cy");
+            require_finite_camera_number(cv.skew, "opencv.skew");
+            validate_pose(cv.world_to_camera, "camera.opencv.world_to_camera");
+            return;  // the look-at fields are not used
+        }
+        default:
+            throw std::invalid_argument("camera.model: expected look_at, opencv or orthographic, got " +
+                                        std::to_string(static_cast<int>(camera.model)));
+    }
     if (!all_finite(camera.eye)) throw std::invalid_argument("camera.eye: expected finite numbers");
     if (!all_finite(camera.lookat)) throw std::invalid_argument("camera.lookat: expected finite numbers");
     if (!all_finite(camera.up)) throw std::invalid_argument("camera.up: expected finite numbers");
-    require_positive_finite(camera.focal, "focal");
+    if (camera.model == CameraModel::look_at) require_positive_finite(camera.focal, "focal");  // orthographic: unused
     require_positive_finite(camera.sensor_height, "sensor_height");
     require_positive_finite(camera.sensor_width, "sensor_width");
 }

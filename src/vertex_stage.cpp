@@ -38,9 +38,21 @@ void camera_normals(const CameraFrame& frame, const std::vector<glm::vec3>& norm
 
 }  // namespace
 
-View::View(const Camera& camera, int rows, int columns, glm::dvec2 offset)
-    : frame(make_camera_frame(camera, rows, columns)), sample_offset(offset),
-      near_depth(camera.focal * kNearPlaneOverFocal) {}
+View::View(const Camera& camera, int rows, int columns, glm::dvec2 offset, int samples_per_pixel)
+    : frame(make_camera_frame(camera, rows, columns, samples_per_pixel)), sample_offset(offset),
+      near_depth(camera.model == CameraModel::orthographic ? std::numeric_limits<double>::denorm_min()
+                                                             : camera.focal * kNearPlaneOverFocal) {}
+
+void place_near_plane(View& view, const std::vector<ScreenVertex>& screen) {
+    if (view.frame.model != CameraModel::opencv) return;
+    double farthest = -std::numeric_limits<double>::infinity();
+    for (const ScreenVertex& s : screen) farthest = std::max(farthest, s.depth);
+    // Nothing in front of the eye (or no vertex): every vertex is behind the
+    // smallest positive plane, so nothing is drawn, as it should be.
+    view.near_depth = farthest > 0.0 ? std::max(farthest * kNearPlaneOverFarthestVertex,
+                                                std::numeric_limits<double>::denorm_min())
+                                     : std::numeric_limits<double>::denorm_min();
+}
 
 glm::dvec2 View::sample_from_camera(const glm::dvec3& point_camera) const {
     const ProjectedPoint p = frame.pixel_from_camera(point_camera);
@@ -105,6 +117,7 @@ void build_light_rig(const Scene& scene, const PhongMaterial& material, const Ca
     rig.active_lights.clear();
     rig.material = material;
     rig.lighting = scene.lighting;
+    rig.eye_at_infinity = !frame.perspective();
     // The same product, in the same order, as ambient_term(): ka * Ia, then * c.
     rig.ambient_factor = Vec3<Real>(material.ka) * Vec3<Real>(scene.ambient);
     for (const PointLight& light : scene.lights) {
@@ -154,7 +167,12 @@ void light_vertex_lanes(const PointShader<Real>& shader, const VertexMaterials<R
         }
         for (std::size_t i = 0; i < n; ++i) {
             for (std::size_t k = 0; k < lights.size(); ++k) vectors.to_light[k] = {lane(k, 0)[i], lane(k, 1)[i], lane(k, 2)[i]};
-            if (shader.effects.specular) vectors.to_eye = {lane(lights.size(), 0)[i], lane(lights.size(), 1)[i], lane(lights.size(), 2)[i]};
+            if (shader.effects.specular) {
+                vectors.to_eye = shader.rig->eye_at_infinity
+                                     ? kEyeAtInfinity<Real>  // orthographic: V = -f
+                                     : Vec3<Real>(lane(lights.size(), 0)[i], lane(lights.size(), 1)[i],
+                                                  lane(lights.size(), 2)[i]);
+            }
             Varyings<Real>& v = varyings[first + i];
             v.lit = materials.shader_of(shader, first + i).shade_with(vectors, v.normal, v.color);
         }

@@ -54,6 +54,10 @@ template <typename Real>
 void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, VertexStageMemory<Real>& memory,
                         TransformedVertices<Real>& out, ProgressMonitor& progress);
 
+/// An OpenCV camera's near plane: 1e-4 x the largest z_c of the vertices
+/// (`screen`, from transform_vertices()); other cameras' is set by View.
+void place_near_plane(View& view, const std::vector<ScreenVertex>& screen);
+
 /// The lights in camera space, those with zero intensity left out of the active ones.
 template <typename Real>
 void build_light_rig(const Scene& scene, const CameraFrame& frame, LightRig<Real>& rig);

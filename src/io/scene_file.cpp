@@ -114,9 +114,13 @@ public:
         return value.get<std::string>();
     }
 
+    const std::string& name() const { return name_; }
+
 private:
     std::string name_;
 };
+
+const std::string& reader_name(const SceneReader& reader) { return reader.name(); }
 
 /// "name:line:column" (1-based) of a byte offset into text.
 std::string position_in(const std::string& name, const std::string& text, std::size_t offset) {
@@ -168,26 +172,140 @@ void read_mesh_path(const SceneReader& reader, const json& document, const std::
     }
 }
 
-void read_camera(const SceneReader& reader, const json& document, SceneFile& result) {
-    const json::json_pointer root;
-    Camera& out = result.scene.camera;
-    const json::json_pointer camera_at = root / "camera";
-    const json& camera = reader.require_object(
-        reader.required_field(document, root, "camera", "an object with eye, lookat, up, focal, sensor"), camera_at);
-    reader.warn_unknown(camera, camera_at, {"eye", "lookat", "up", "focal", "sensor"}, &result.warnings);
+/// A matrix as a list of rows: `rows` (or `other_rows`) rows of `columns`
+/// finite numbers each.
+std::vector<std::vector<double>> read_matrix(const SceneReader& reader, const json& value,
+                                             const json::json_pointer& where, std::size_t rows,
+                                             std::size_t other_rows, std::size_t columns, const char* expected) {
+    if (!value.is_array() || (value.size() != rows && value.size() != other_rows)) {
+        reader.fail(where, std::string("expected ") + expected + ", got " + type_of(value));
+    }
+    std::vector<std::vector<double>> out;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const json& row = value[i];
+        if (!row.is_array() || row.size() != columns) {
+            reader.fail(where / i, "expected a row of " + std::to_string(columns) + " numbers, got " + type_of(row));
+        }
+        out.emplace_back();
+        for (std::size_t j = 0; j < columns; ++j) out.back().push_back(reader.number(row[j], where / i / j));
+    }
+    return out;
+}
+
+/// A pose as the contract writes it: 4x4 rows with last row [0, 0, 0, 1] (or
+/// its first 3 rows); the 3x3 part must be a rotation.
+Matrix3x4 read_pose(const SceneReader& reader, const json& value, const json::json_pointer& where) {
+    const std::vector<std::vector<double>> m =
+        read_matrix(reader, value, where, 4, 3, 4, "4 rows of 4 numbers (or 3 rows: [R | t])");
+    if (m.size() == 4 && !(m[3][0] == 0.0 && m[3][1] == 0.0 && m[3][2] == 0.0 && m[3][3] == 1.0)) {
+        reader.fail(where / 3, "expected the last row [0, 0, 0, 1], got " + value[3].dump());
+    }
+    Matrix3x4 pose{};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 4; ++j) pose[i][j] = m[i][j];
+    }
+    try {
+        validate_pose(pose, "");
+    } catch (const std::invalid_argument& error) {
+        reader.fail(where, std::string(error.what()).substr(2));  // drop the empty field name's ": "
+    }
+    return pose;
+}
+
+/// An OpenCV camera: "K" and one of "world_to_camera" and "camera_to_world".
+void read_opencv_camera(const SceneReader& reader, const json& camera, const json::json_pointer& camera_at,
+                        const json& K_value, Camera& out) {
+    const json::json_pointer K_at = camera_at / "K";
+    const std::vector<std::vector<double>> K =
+        read_matrix(reader, K_value, K_at, 3, 3, 3, "[[fx, s, cx], [0, fy, cy], [0, 0, 1]]");
+    if (!(K[1][0] == 0.0)) reader.fail(K_at / 1 / 0, "expected 0, got " + K_value[1][0].dump());
+    if (!(K[2][0] == 0.0 && K[2][1] == 0.0 && K[2][2] == 1.0)) {
+        reader.fail(K_at / 2, "expected [0, 0, 1], got " + K_value[2].dump());
+    }
+    if (!(K[0][0] > 0.0)) reader.fail(K_at / 0 / 0, "expected fx, a positive number, got " + K_value[0][0].dump());
+    if (!(K[1][1] > 0.0)) reader.fail(K_at / 1 / 1, "expected fy, a positive number, got " + K_value[1][1].dump());
+    const json* world_to_camera = reader.optional_field(camera, camera_at, "world_to_camera");
+    const json* camera_to_world = reader.optional_field(camera, camera_at, "camera_to_world");
+    if (world_to_camera != nullptr && camera_to_world != nullptr) {
+        reader.fail(camera_at / "camera_to_world", "give one of world_to_camera and camera_to_world, not both");
+    }
+    if (world_to_camera == nullptr && camera_to_world == nullptr) {
+        reader.fail(camera_at / "world_to_camera",
+                    "missing required field; an OpenCV camera (K) needs world_to_camera or camera_to_world (4x4)");
+    }
+    Matrix3x4 pose = world_to_camera != nullptr ? read_pose(reader, *world_to_camera, camera_at / "world_to_camera")
+                                                : read_pose(reader, *camera_to_world, camera_at / "camera_to_world");
+    if (camera_to_world != nullptr) pose = invert_pose(pose, "camera.camera_to_world");
+    out.model = CameraModel::opencv;
+    out.opencv.fx = K[0][0];
+    out.opencv.skew = K[0][1];
+    out.opencv.cx = K[0][2];
+    out.opencv.fy = K[1][1];
+    out.opencv.cy = K[1][2];
+    out.opencv.world_to_camera = pose;
+}
+
+constexpr const char* kCameraExpected =
+    "an object: eye, lookat, up, focal, sensor (look-at); K and world_to_camera or camera_to_world (OpenCV); "
+    "projection \"orthographic\", eye, lookat, up, sensor";
+
+/// The camera object at `camera_at`, into `out`.
+void read_camera_object(const SceneReader& reader, const json& camera_value, const json::json_pointer& camera_at,
+                        Camera& out, std::vector<std::string>& warnings) {
+    const json& camera = reader.require_object(camera_value, camera_at);
+    reader.warn_unknown(camera, camera_at,
+                        {"eye", "lookat", "up", "focal", "sensor", "K", "world_to_camera", "camera_to_world", "projection"},
+                        &warnings);
+    bool orthographic = false;
+    if (const json* projection = reader.optional_field(camera, camera_at, "projection")) {
+        const std::string name = reader.string(*projection, camera_at / "projection");
+        if (name != "orthographic" && name != "perspective") {
+            reader.fail(camera_at / "projection", "expected \"perspective\" or \"orthographic\", got " + projection->dump());
+        }
+        orthographic = name == "orthographic";
+    }
+    if (const json* K = reader.optional_field(camera, camera_at, "K")) {
+        if (orthographic) reader.fail(camera_at / "projection", "an OpenCV camera (K) is a perspective camera, not orthographic");
+        read_opencv_camera(reader, camera, camera_at, *K, out);
+        // A file may also carry the look-at form (--camera-out writes both): the matrices win.
+        for (const char* unused : {"eye", "lookat", "up", "focal", "sensor"}) {
+            if (camera.contains(unused)) {
+                warnings.push_back(reader_name(reader) + ": ignoring " + (camera_at / unused).to_string() +
+                                          ": an OpenCV camera (K) is placed by its matrices");
+            }
+        }
+        return;
+    }
+    for (const char* opencv_only : {"world_to_camera", "camera_to_world"}) {
+        if (camera.contains(opencv_only)) reader.fail(camera_at / "K", std::string("missing; ") + opencv_only + " is given, so K is required");
+    }
+    out.model = orthographic ? CameraModel::orthographic : CameraModel::look_at;
     out.eye = reader.triple(reader.required_field(camera, camera_at, "eye", "[x, y, z]"), camera_at / "eye");
     out.lookat = reader.triple(reader.required_field(camera, camera_at, "lookat", "[x, y, z]"), camera_at / "lookat");
     if (const json* up = reader.optional_field(camera, camera_at, "up")) {
         out.up = reader.triple(*up, camera_at / "up");
     }
-    out.focal = reader.positive_number(reader.required_field(camera, camera_at, "focal", "a positive number"),
-                                       camera_at / "focal");
+    if (orthographic) {
+        if (camera.contains("focal")) {
+            warnings.push_back(reader_name(reader) + ": ignoring " + (camera_at / "focal").to_string() +
+                                      ": an orthographic camera has no focal length");
+        }
+    } else {
+        out.focal = reader.positive_number(reader.required_field(camera, camera_at, "focal", "a positive number"),
+                                           camera_at / "focal");
+    }
     const json& sensor = reader.required_field(camera, camera_at, "sensor", "[height, width]");
     if (!sensor.is_array() || sensor.size() != 2) {
         reader.fail(camera_at / "sensor", "expected [height, width] (2 numbers), got " + type_of(sensor));
     }
     out.sensor_height = reader.positive_number(sensor[0], camera_at / "sensor" / 0);
     out.sensor_width = reader.positive_number(sensor[1], camera_at / "sensor" / 1);
+}
+
+void read_camera(const SceneReader& reader, const json& document, SceneFile& result) {
+    const json::json_pointer root;
+    read_camera_object(reader, reader.required_field(document, root, "camera", kCameraExpected), root / "camera",
+                       result.scene.camera, result.warnings);
 }
 
 void read_image(const SceneReader& reader, const json& document, SceneFile& result) {
@@ -470,6 +588,39 @@ SceneFile read_scene_file(const std::string& path) {
     return parse_scene_json(text.str(), path, std::filesystem::path(path).parent_path().string());
 }
 
+Camera parse_camera_json(const std::string& text, const std::string& name, std::vector<std::string>* warnings) {
+    const json document = parse_or_explain(text, name);
+    const SceneReader reader(name);
+    const json::json_pointer root;
+    reader.require_object(document, root);
+    std::vector<std::string> found;
+    Camera camera;
+    if (document.contains("camera")) {
+        read_camera_object(reader, document["camera"], root / "camera", camera, found);
+    } else {
+        read_camera_object(reader, document, root, camera, found);
+    }
+    try {
+        make_camera_frame(camera, 1, 1);  // the geometric conditions (eye == lookat, up parallel to the view)
+    } catch (const std::invalid_argument& error) {
+        throw FileError(name + ": " + error.what());
+    }
+    if (warnings != nullptr) warnings->insert(warnings->end(), found.begin(), found.end());
+    return camera;
+}
+
+Camera read_camera_file(const std::string& path, std::vector<std::string>* warnings) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) throw FileError(path + ": camera file not found (no such file)");
+    if (std::filesystem::is_directory(path, error)) throw FileError(path + ": is a folder; expected a camera file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw FileError(path + ": cannot read camera file: " + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw FileError(path + ": cannot read camera file: " + std::strerror(errno));
+    return parse_camera_json(text.str(), path, warnings);
+}
+
 glm::dmat4 compose_transform(const glm::dvec3& translation, const glm::dvec4& rotation, const glm::dvec3& scale) {
     const double length = std::sqrt(rotation.x * rotation.x + rotation.y * rotation.y + rotation.z * rotation.z +
                                     rotation.w * rotation.w);
@@ -515,6 +666,12 @@ std::string format_number(double value) {
     return buffer;
 }
 
+std::string format_exact(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    return buffer;
+}
+
 template <typename Vector>
 std::string format_triple(const Vector& v) {
     return "[" + format_number(double(v.x)) + ", " + format_number(double(v.y)) + ", " +
@@ -535,10 +692,29 @@ std::string scene_to_json(const Scene& scene, const std::string& mesh_path) {
     out << "{\n";
     out << "  \"mesh\": " << json(mesh_path).dump() << ",\n";
     out << "  \"camera\": {\n";
-    out << "    \"eye\": " << format_triple(scene.camera.eye) << ", \"lookat\": " << format_triple(scene.camera.lookat)
-        << ", \"up\": " << format_triple(scene.camera.up) << ",\n";
-    out << "    \"focal\": " << format_number(scene.camera.focal) << ", \"sensor\": ["
-        << format_number(scene.camera.sensor_height) << ", " << format_number(scene.camera.sensor_width) << "]\n";
+    if (scene.camera.model == CameraModel::opencv) {
+        const OpenCvCamera& cv = scene.camera.opencv;
+        const auto row = [](const auto& values) {
+            std::string text = "[";
+            // Round-trip precision: 7 digits would bend a rotation by ~1e-7.
+            for (std::size_t j = 0; j < values.size(); ++j) text += (j == 0 ? "" : ", ") + format_exact(values[j]);
+            return text + "]";
+        };
+        const Matrix3x3 K = cv.K();
+        const Matrix4x4 pose = cv.world_to_camera_4x4();
+        out << "    \"K\": [" << row(K[0]) << ", " << row(K[1]) << ", " << row(K[2]) << "],\n";
+        out << "    \"world_to_camera\": [" << row(pose[0]) << ",\n                        " << row(pose[1])
+            << ",\n                        " << row(pose[2]) << ",\n                        " << row(pose[3]) << "]\n";
+    } else {
+        const bool orthographic = scene.camera.model == CameraModel::orthographic;
+        if (orthographic) out << "    \"projection\": \"orthographic\",\n";
+        out << "    \"eye\": " << format_triple(scene.camera.eye) << ", \"lookat\": " << format_triple(scene.camera.lookat)
+            << ", \"up\": " << format_triple(scene.camera.up) << ",\n";
+        out << "    ";
+        if (!orthographic) out << "\"focal\": " << format_number(scene.camera.focal) << ", ";
+        out << "\"sensor\": [" << format_number(scene.camera.sensor_height) << ", "
+            << format_number(scene.camera.sensor_width) << "]\n";
+    }
     out << "  },\n";
     out << "  \"image\": { \"height\": " << scene.image.rows << ", \"width\": " << scene.image.columns
         << ", \"background\": " << format_triple(scene.image.background) << " },\n";

@@ -3,8 +3,10 @@
 // alone; io::load_scene (scene_load.hpp) loads its meshes too.
 //
 // Required: "mesh" or "objects" (not both; neither only when the caller
-// supplies a mesh, e.g. `--mesh`), "camera" with "eye", "lookat", "focal",
-// "sensor", and "image" with "height" and "width". Optional, with these
+// supplies a mesh, e.g. `--mesh`), "camera" (look-at: "eye", "lookat",
+// "focal", "sensor"; OpenCV: "K" and "world_to_camera" or "camera_to_world";
+// orthographic: "projection": "orthographic", "eye", "lookat", "sensor"), and
+// "image" with "height" and "width". Optional, with these
 // defaults: camera.up [0,1,0], image.background [1,1,1], ambient
 // [0.2,0.2,0.2], lights [] (ambient only), shader "phong", lighting "full",
 // normals "computed", material: see resolve_material.
@@ -64,6 +66,16 @@ SceneFile read_scene_file(const std::string& path);
 /// The same from text: `name` is used in messages, `folder` to resolve "mesh".
 SceneFile parse_scene_json(const std::string& text, const std::string& name,
                            const std::string& folder);
+
+/// A camera file: a JSON object that is a scene's "camera" (any of the
+/// contract's three forms), or an object with a "camera" field holding one
+/// (a scene file, or what `render --camera-out` writes). Other fields of such
+/// an object are not read. Throws FileError naming `name` and the JSON
+/// pointer; `warnings` gets the camera's ignored fields.
+Camera parse_camera_json(const std::string& text, const std::string& name, std::vector<std::string>* warnings);
+
+/// parse_camera_json of a file's contents.
+Camera read_camera_file(const std::string& path, std::vector<std::string>* warnings);
 
 /// The defaults used when neither the scene nor the OBJ's MTL gives a material
 /// field: the contract's example material, ka 0.1, kd 0.8, ks 1, n 1.
