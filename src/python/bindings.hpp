@@ -12,6 +12,8 @@ namespace py = pybind11;
 void bind_seed_functions(py::module_& module);
 /// shade_gouraud and shade_phong: one triangle into a canvas.
 void bind_seed_fill(py::module_& module);
+/// Camera: look-at, OpenCV and orthographic, numpy matrices in and out.
+void bind_camera(py::module_& module);
 /// Mesh, Scene, render, Renderer, read_image, write_image.
 void bind_scene_api(py::module_& module);
 

@@ -42,6 +42,7 @@ malformed files raise phongrast.FileError (a ValueError) naming the file.)";
         "The render's progress callable returned False; a Renderer stays usable.";
     phongrast::python::bind_seed_functions(module);
     phongrast::python::bind_seed_fill(module);
+    phongrast::python::bind_camera(module);
     phongrast::python::bind_scene_api(module);
     phongrast::python::add_text_signatures(module);  // last: inspect.signature() for everything above
 }

@@ -470,6 +470,12 @@ void bind_scene_camera(py::class_<PyScene>& scene) {
                            s.scene->camera.sensor_height = read_number(hw.first, "sensor[0]");
                            s.scene->camera.sensor_width = read_number(hw.second, "sensor[1]");
                        }, "(H, W): height and width of the image plane in world units.");
+    scene.def_property("camera", [](const PyScene& s) { return s.scene->camera; },
+                       [](PyScene& s, const Camera& camera) {
+                           make_camera_frame(camera, 1, 1);  // validated when set, naming the field
+                           s.scene->camera = camera;
+                       }, "The camera (a copy): phongrast.Camera. eye, lookat, up, focal and sensor edit a look-at "
+                          "or orthographic camera's fields.");
     scene.def_property("size", [](const PyScene& s) { return py::make_tuple(s.scene->image.rows, s.scene->image.columns); },
                        [](PyScene& s, std::pair<py::object, py::object> mn) {
                            s.scene->image.rows = read_int(mn.first, "size[0]", 1, kMaxImageSide);

@@ -42,6 +42,10 @@ def main(folder: str) -> None:
                                       [[0, 0, 0], [1, 0, 0], [0, 1, 0]], None, [[0, 1, 2]], material, lights,
                                       0.2, "full")
     assert picture.shape == (8, 8, 3)
+    camera = phongrast.Camera.from_opencv(np.array([[50.0, 0.0, 3.5], [0.0, 50.0, 3.5], [0.0, 0.0, 1.0]]), np.eye(4))
+    K: npt.NDArray[np.float64] = camera.K
+    assert K.shape == (3, 3) and camera.model == "opencv" and camera.camera_to_world.shape == (4, 4)
+    assert camera.project([[0.0, 0.0, 1.0]], 8, 8).shape == (1, 3)
     try:
         phongrast.Mesh.load(folder + "/missing.obj")
     except phongrast.FileError as error:
