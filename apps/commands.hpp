@@ -22,6 +22,7 @@ struct RenderCommand {
     std::string aovs;          ///< --aov: "depth,normal,id,alpha" into one EXR
     bool transparent = false;  ///< --transparent: PNG with alpha, background transparent
     std::string png_compression = "default";
+    std::string camera_out;    ///< --camera-out: the image's camera as JSON (io/camera_record.hpp)
 };
 void add_render_command(CLI::App& app, RenderCommand& command);
 int run_render(const RenderCommand& command);

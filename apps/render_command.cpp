@@ -6,6 +6,8 @@
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "phongrast/io/aov_file.hpp"
+#include "phongrast/io/camera_record.hpp"
+#include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/text_file.hpp"
 #include "report.hpp"
@@ -39,6 +41,10 @@ void add_render_command(CLI::App& app, RenderCommand& command) {
     render->add_option("--aov", command.aovs,
                        "Extra outputs next to the colour, written into the one .exr as channels: depth (Z), normal "
                        "(N.X, N.Y, N.Z), id (triangle index, unsigned), alpha (A); comma-separated, or all");
+    render->add_option("--camera-out", command.camera_out,
+                       "Write the image's camera to this JSON file: file name, width, height, K (OpenCV), "
+                       "world_to_camera (OpenCV axes), camera_to_world_opengl (OpenGL/Blender axes), the look-at "
+                       "form and the near plane; its \"camera\" is readable by --camera");
     add_png_compression_flag(*render, command.png_compression);
     render->add_flag("--transparent", command.transparent,
                      "Write a PNG with an alpha channel: the background transparent, edges partly so");
@@ -66,6 +72,17 @@ int run_render(const RenderCommand& command) {
             throw std::invalid_argument("--transparent: writes a PNG with alpha; give -o NAME.png, not " + output);
         }
         prepared.options.aovs.alpha = true;
+    }
+    if (!command.camera_out.empty()) {
+        // Refused before rendering: a missing folder, a folder in the way.
+        const std::filesystem::path folder = std::filesystem::path(command.camera_out).parent_path();
+        std::error_code error;
+        if (!folder.empty() && !std::filesystem::is_directory(folder, error)) {
+            throw io::FileError(command.camera_out + ": --camera-out folder '" + folder.string() + "' does not exist");
+        }
+        if (std::filesystem::is_directory(command.camera_out, error)) {
+            throw io::FileError(command.camera_out + ": --camera-out is a folder; expected a .json file name");
+        }
     }
     stop_if_interrupted();
 
@@ -117,6 +134,11 @@ int run_render(const RenderCommand& command) {
                             stats_json(timing, result.stats, prepared.scene, prepared.options));
     }
     messages.result("wrote " + std::filesystem::absolute(output).lexically_normal().string());
+    if (!command.camera_out.empty()) {
+        io::write_text_file(command.camera_out, io::camera_records_json({io::camera_record(
+                                                    prepared.scene, output, command.camera_out)}));
+        messages.result("wrote " + std::filesystem::absolute(command.camera_out).lexically_normal().string());
+    }
     return 0;
 }
 

@@ -7,7 +7,10 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_run.hpp"
+#include "phongrast/io/aov_file.hpp"
 #include "io_test_files.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/io/image_file.hpp"
@@ -187,6 +190,7 @@ TEST_CASE("bad camera flags: exit 2, a message naming the flag, no output file")
          "give one of the two"},
         {"--camera missing.json", "missing.json: camera file not found"},
         {"--projection orthographic --K 70,65,30,25", "perspective camera"},
+        {"--camera-out nowhere/cam.json", "--camera-out folder 'nowhere' does not exist"},
     };
     for (const Case& c : cases) {
         INFO(c.flags);
@@ -201,4 +205,184 @@ TEST_CASE("bad camera flags: exit 2, a message naming the flag, no output file")
     CHECK(run.status == 2);
     CHECK_THAT(run.err, Contains("bad_camera.json: /world_to_camera: the 3x3 part is not a rotation"));
     CHECK_FALSE(std::filesystem::exists(folder.file("bad.png")));
+}
+
+namespace {
+
+/// An OBJ of a UV sphere of radius `radius` around `centre` (closed, convex).
+std::string sphere_obj(const glm::dvec3& centre, double radius) {
+    std::string text;
+    const int stacks = 10, slices = 14;
+    const double pi = std::acos(-1.0);
+    for (int i = 0; i <= stacks; ++i) {
+        for (int j = 0; j < slices; ++j) {
+            const double theta = pi * i / stacks, phi = 2.0 * pi * j / slices;
+            const glm::dvec3 p = centre + radius * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                                                              std::sin(theta) * std::sin(phi));
+            text += "v " + number(p.x) + " " + number(p.y) + " " + number(p.z) + "\n";
+        }
+    }
+    for (int i = 0; i < stacks; ++i) {
+        for (int j = 0; j < slices; ++j) {
+            const int a = i * slices + j + 1, b = i * slices + (j + 1) % slices + 1;
+            const int c = a + slices, d = b + slices;
+            text += "f " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+            text += "f " + std::to_string(a) + " " + std::to_string(d) + " " + std::to_string(b) + "\n";
+        }
+    }
+    return text;
+}
+
+/// Checks a --camera-out file against the image it describes, without the
+/// renderer's projection: each vertex projected by the file's K [R | t]
+/// (numbers read from the JSON, arithmetic here) lands on or next to a pixel
+/// the silhouette (alpha) covers, and the projected bounding box is the
+/// silhouette's to a pixel.
+void check_camera_file(const TemporaryFolder& folder, const std::string& camera_file, const std::string& image_file,
+                       const std::vector<glm::dvec3>& vertices) {
+    const nlohmann::json document = nlohmann::json::parse(read_text(folder.file(camera_file)));
+    const nlohmann::json& record = document.at("images").at(0);
+    CHECK(record.at("file_path") == image_file);
+    const int rows = record.at("height"), columns = record.at("width");
+    const auto K = record.at("K").get<std::vector<std::vector<double>>>();
+    const auto w2c = record.at("world_to_camera").get<std::vector<std::vector<double>>>();
+    const auto gl = record.at("camera_to_world_opengl").get<std::vector<std::vector<double>>>();
+    // camera_to_world_opengl = inverse(world_to_camera) with the y and z axes negated: R^T columns.
+    for (int i = 0; i < 3; ++i) {
+        CHECK(gl[i][0] == Approx(w2c[0][i]).margin(1e-12));
+        CHECK(gl[i][1] == Approx(-w2c[1][i]).margin(1e-12));
+        CHECK(gl[i][2] == Approx(-w2c[2][i]).margin(1e-12));
+    }
+    CHECK(record.at("near").get<double>() > 0.0);
+
+    Image image;
+    AovPlanes planes;
+    io::read_exr_with_aovs(folder.file(image_file), image, planes);
+    REQUIRE(image.rows == rows);
+    REQUIRE(image.columns == columns);
+    REQUIRE(planes.alpha.size() == static_cast<std::size_t>(rows) * columns);
+    const auto covered = [&](int i, int j) {
+        return i >= 0 && j >= 0 && i < rows && j < columns && planes.alpha[static_cast<std::size_t>(i) * columns + j] > 0.0f;
+    };
+    int silhouette_top = rows, silhouette_bottom = -1, silhouette_left = columns, silhouette_right = -1;
+    for (int i = 0; i < rows; ++i) {
+        for (int j = 0; j < columns; ++j) {
+            if (!covered(i, j)) continue;
+            silhouette_top = std::min(silhouette_top, i);
+            silhouette_bottom = std::max(silhouette_bottom, i);
+            silhouette_left = std::min(silhouette_left, j);
+            silhouette_right = std::max(silhouette_right, j);
+        }
+    }
+    REQUIRE(silhouette_bottom >= 0);
+    double top = 1e300, bottom = -1e300, left = 1e300, right = -1e300;
+    int near_silhouette = 0;
+    for (const glm::dvec3& p : vertices) {
+        double q[3];
+        for (int i = 0; i < 3; ++i) q[i] = w2c[i][0] * p.x + w2c[i][1] * p.y + w2c[i][2] * p.z + w2c[i][3];
+        REQUIRE(q[2] > 0.0);
+        // OpenCV pixel coordinates, + 0.5 for the contract's (pixel (i, j) covers [j, j+1) x [i, i+1)).
+        const double column = (K[0][0] * q[0] + K[0][1] * q[1]) / q[2] + K[0][2] + 0.5;
+        const double row = K[1][1] * q[1] / q[2] + K[1][2] + 0.5;
+        top = std::min(top, row);
+        bottom = std::max(bottom, row);
+        left = std::min(left, column);
+        right = std::max(right, column);
+        const int i = static_cast<int>(std::floor(row)), j = static_cast<int>(std::floor(column));
+        bool found = false;
+        for (int di = -1; di <= 1; ++di) {
+            for (int dj = -1; dj <= 1; ++dj) found = found || covered(i + di, j + dj);
+        }
+        near_silhouette += found;
+    }
+    CHECK(near_silhouette == static_cast<int>(vertices.size()));
+    // The silhouette's pixel centres lie within the projected box, which reaches at most a pixel beyond them.
+    CHECK(std::abs(std::floor(top) - silhouette_top) <= 1.0);
+    CHECK(std::abs(std::floor(bottom) - silhouette_bottom) <= 1.0);
+    CHECK(std::abs(std::floor(left) - silhouette_left) <= 1.0);
+    CHECK(std::abs(std::floor(right) - silhouette_right) <= 1.0);
+}
+
+std::vector<glm::dvec3> obj_vertices(const std::string& text) {
+    std::vector<glm::dvec3> out;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("v ", 0) != 0) continue;
+        std::istringstream fields(line.substr(2));
+        glm::dvec3 p;
+        fields >> p.x >> p.y >> p.z;
+        out.push_back(p);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("--camera-out: the written matrices project the mesh onto its rendered silhouette") {
+    TemporaryFolder folder;
+    const std::string sphere = sphere_obj({0.3, -0.2, 0.1}, 1.0);
+    folder.write("sphere.obj", sphere);
+    const std::vector<glm::dvec3> vertices = obj_vertices(sphere);
+    SECTION("an automatically framed look-at camera") {
+        const Run run = run_cli(folder, "render sphere.obj -q --size 96x72 --aov alpha -o s.exr --camera-out cam.json");
+        INFO(run.err);
+        REQUIRE(run.status == 0);
+        check_camera_file(folder, "cam.json", "s.exr", vertices);
+        // Its "camera" reads back through --camera: the same picture.
+        const Run again = run_cli(folder, "render sphere.obj -q --size 96x72 --aov alpha -o t.exr --camera cam.json");
+        REQUIRE(again.status == 0);
+        CHECK(exr_pixels(folder, "t.exr") == exr_pixels(folder, "s.exr"));
+    }
+    SECTION("an OpenCV camera with skew") {
+        Matrix3x4 p = pose();
+        const Run run = run_cli(folder, "render sphere.obj -q --size 80x64 --aov alpha -o o.exr --camera-out sub/../cam.json"
+                                        " --K 60,58,38,30,6 --world-to-camera " + pose_text(p, false));
+        INFO(run.err);
+        REQUIRE(run.status == 2);  // sub/ does not exist: refused before rendering
+        CHECK_FALSE(std::filesystem::exists(folder.file("o.exr")));
+        std::filesystem::create_directory(folder.file("sub"));
+        const Run ok = run_cli(folder, "render sphere.obj -q --size 80x64 --aov alpha -o o.exr --camera-out sub/cam.json"
+                                       " --K 60,58,38,30,6 --world-to-camera " + pose_text(p, false));
+        INFO(ok.err);
+        REQUIRE(ok.status == 0);
+        const nlohmann::json record = nlohmann::json::parse(read_text(folder.file("sub/cam.json"))).at("images").at(0);
+        CHECK(record.at("file_path") == "../o.exr");  // relative to the camera file's folder
+        CHECK(record.at("look_at").is_null());
+        std::filesystem::copy_file(folder.file("sub/cam.json"), folder.file("cam2.json"));
+        // check_camera_file reads the image by the name given here (the record's path is relative to sub/).
+        const nlohmann::json document = nlohmann::json::parse(read_text(folder.file("cam2.json")));
+        CHECK(document.at("images").at(0).at("K").at(0).at(1) == 6.0);
+        nlohmann::json fixed = document;
+        fixed["images"][0]["file_path"] = "o.exr";
+        folder.write("cam2.json", fixed.dump());
+        check_camera_file(folder, "cam2.json", "o.exr", vertices);
+    }
+    SECTION("the shared spot mesh, if present") {
+        const std::string spot = std::string(PHONGRAST_SHARED_ASSETS_DIR) + "/spot.obj";
+        if (!std::filesystem::exists(spot)) {
+            WARN("skipped: " + spot + " is missing");
+            return;
+        }
+        const Run run = run_cli(folder, "render '" + spot + "' -q --size 120x90 --aov alpha -o spot.exr --camera-out cam.json");
+        INFO(run.err);
+        REQUIRE(run.status == 0);
+        check_camera_file(folder, "cam.json", "spot.exr", obj_vertices(read_text(spot)));
+    }
+}
+
+TEST_CASE("--camera-out of an orthographic camera has no K and says so") {
+    TemporaryFolder folder;
+    write_fixtures(folder);
+    const Run run = run_cli(folder, "render scene.json -q --projection orthographic -o o.png --camera-out cam.json");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    const nlohmann::json document = nlohmann::json::parse(read_text(folder.file("cam.json")));
+    const nlohmann::json& record = document.at("images").at(0);
+    CHECK(record.at("projection") == "orthographic");
+    CHECK(record.at("K").is_null());
+    CHECK(record.at("near") == 0.0);
+    CHECK(document.at("camera").at("projection") == "orthographic");
+    CHECK(record.at("world_to_camera").at(2).at(3).get<double>() ==
+          Approx(std::sqrt(0.5 * 0.5 + 0.3 * 0.3 + 5.0 * 5.0)));  // the eye's distance along f to the origin
 }
