@@ -32,6 +32,7 @@ void frame_points(const std::vector<glm::dvec3>& points, int rows, int columns, 
     scene.image.rows = rows;
     scene.image.columns = columns;
     scene.image.background = glm::vec3(1.0f);
+    scene.camera.model = CameraModel::look_at;  // framing makes a look-at camera, whatever the scene had
     scene.camera.lookat = centre;
     scene.camera.eye = centre + glm::dvec3(0.0, 0.0, 2.5 * diagonal);
     scene.camera.up = {0.0, 1.0, 0.0};

@@ -84,7 +84,7 @@ std::vector<glm::vec3> exr_pixels(const TemporaryFolder& folder, const std::stri
 
 }  // namespace
 
-TEST_CASE("--K with --world-to-camera (12 or 16 numbers) draws the library's OpenCV render") {
+TEST_CASE("render --K with --world-to-camera (12 or 16 numbers) draws the library's OpenCV render") {
     TemporaryFolder folder;
     write_fixtures(folder);
     const std::string K = "--K " + number(kK[0][0]) + "," + number(kK[1][1]) + "," + number(kK[0][2]) + "," +
@@ -102,7 +102,7 @@ TEST_CASE("--K with --world-to-camera (12 or 16 numbers) draws the library's Ope
     CHECK(lit > 100);  // the triangles are in view
 }
 
-TEST_CASE("--camera-to-world is the inverse pose") {
+TEST_CASE("render --camera-to-world is the inverse pose") {
     TemporaryFolder folder;
     write_fixtures(folder);
     const Camera camera = Camera::from_opencv(kK, pose());
@@ -116,7 +116,7 @@ TEST_CASE("--camera-to-world is the inverse pose") {
     CHECK(exr_pixels(folder, "c.exr") == render(scene_with(folder, inverse)).image.pixels);
 }
 
-TEST_CASE("--K alone keeps the look-at camera's pose; with the look-at's own K it draws the look-at picture") {
+TEST_CASE("render --K alone keeps the look-at camera's pose; with the look-at's own K it draws the look-at picture") {
     TemporaryFolder folder;
     write_fixtures(folder);
     const Scene look_at = load_scene_with_library(folder.file("scene.json"));
@@ -137,7 +137,7 @@ TEST_CASE("--K alone keeps the look-at camera's pose; with the look-at's own K i
     }
 }
 
-TEST_CASE("--projection orthographic draws the library's orthographic render") {
+TEST_CASE("render --projection orthographic draws the library's orthographic render") {
     TemporaryFolder folder;
     write_fixtures(folder);
     const Run run = run_cli(folder, "render scene.json -q --projection orthographic --sensor 3,4 -o o.exr");
@@ -147,7 +147,7 @@ TEST_CASE("--projection orthographic draws the library's orthographic render") {
     CHECK(exr_pixels(folder, "o.exr") == render(scene_with(folder, camera)).image.pixels);
 }
 
-TEST_CASE("--camera reads a camera file: a bare camera object or one under \"camera\"") {
+TEST_CASE("render --camera reads a camera file: a bare camera object or one under \"camera\"") {
     TemporaryFolder folder;
     write_fixtures(folder);
     const Scene scene = scene_with(folder, Camera::from_opencv(kK, pose()));
@@ -319,7 +319,7 @@ std::vector<glm::dvec3> obj_vertices(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("--camera-out: the written matrices project the mesh onto its rendered silhouette") {
+TEST_CASE("render --camera-out: the written matrices project the mesh onto its rendered silhouette") {
     TemporaryFolder folder;
     const std::string sphere = sphere_obj({0.3, -0.2, 0.1}, 1.0);
     folder.write("sphere.obj", sphere);
@@ -371,7 +371,7 @@ TEST_CASE("--camera-out: the written matrices project the mesh onto its rendered
     }
 }
 
-TEST_CASE("--camera-out of an orthographic camera has no K and says so") {
+TEST_CASE("render --camera-out of an orthographic camera has no K and says so") {
     TemporaryFolder folder;
     write_fixtures(folder);
     const Run run = run_cli(folder, "render scene.json -q --projection orthographic -o o.png --camera-out cam.json");
