@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +14,7 @@
 #include "phongrast/camera.hpp"
 #include "phongrast/render.hpp"
 #include "support/meshes.hpp"
+#include "vertex_stage.hpp"
 
 using namespace phongrast;
 
@@ -334,4 +337,36 @@ TEST_CASE("camera validation names the member") {
     Camera ortho = Camera::orthographic({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 1.0, 1.0);
     ortho.focal = 0.0;
     CHECK(message([&] { make_camera_frame(ortho, 10, 10); }) == "no error");
+}
+
+TEST_CASE("near planes: look-at 1e-4 focal, OpenCV 1e-4 of the farthest vertex, orthographic the eye's plane") {
+    using phongrast::detail::ScreenVertex;
+    using phongrast::detail::View;
+    const Camera look_at = Camera::look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 2.0, 1.0, 1.0);
+    CHECK(View(look_at, 8, 8, glm::dvec2(0.0)).near_depth == 2.0 * 1e-4);
+    const Camera ortho = Camera::orthographic({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 1.0, 1.0);
+    const View ortho_view(ortho, 8, 8, glm::dvec2(0.0));
+    CHECK(ortho_view.near_depth > 0.0);
+    CHECK(ortho_view.near_depth == std::numeric_limits<double>::denorm_min());  // z_c > 0 exactly
+    const Camera opencv = Camera::from_opencv({{{10.0, 0.0, 4.0}, {0.0, 10.0, 4.0}, {0.0, 0.0, 1.0}}},
+                                              pose(rotation({0, 1, 0}, 0.0), {0, 0, 5}));
+    View view(opencv, 8, 8, glm::dvec2(0.0));
+    std::vector<ScreenVertex> screen = {{0, 0, -3.0}, {0, 0, 2.0}, {0, 0, 50.0}};
+    phongrast::detail::place_near_plane(view, screen);
+    CHECK(view.near_depth == Approx(50.0 * 1e-4));
+    // Nothing in front of the eye: a positive plane all vertices are behind.
+    screen = {{0, 0, -3.0}, {0, 0, -1.0}};
+    phongrast::detail::place_near_plane(view, screen);
+    CHECK(view.near_depth > 0.0);
+}
+
+TEST_CASE("an OpenCV camera clips a triangle reaching behind it, and draws nothing of one wholly behind") {
+    const Camera camera = Camera::from_opencv({{{20.0, 0.0, 15.5}, {0.0, 20.0, 15.5}, {0.0, 0.0, 1.0}}},
+                                              pose(rotation({0, 1, 0}, 0.0), {0, 0, 0}));
+    // OpenCV axes with R = I: z forward. One corner 4 units behind the eye.
+    const glm::dvec3 reaching[3] = {{-1.0, -1.0, 3.0}, {1.0, -1.0, 3.0}, {0.0, 1.0, -4.0}};
+    const Image clipped = render(coverage_scene(reaching, camera, 32, 32)).image;
+    CHECK(covered_count(clipped) > 50);  // clipped at the near plane, not dropped
+    const glm::dvec3 behind[3] = {{-1.0, -1.0, -3.0}, {1.0, -1.0, -3.0}, {0.0, 1.0, -4.0}};
+    CHECK(covered_count(render(coverage_scene(behind, camera, 32, 32)).image) == 0);
 }

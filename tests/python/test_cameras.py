@@ -123,3 +123,13 @@ def test_bad_cameras_raise_value_error_naming_the_field():
         phongrast.Camera.from_opencv(K, bottom)
     with pytest.raises(ValueError, match=r"to_opencv"):
         phongrast.Camera.look_at([0, 0, 5], [0, 0, 0]).K
+
+
+def test_framing_makes_a_look_at_camera():
+    mesh = phongrast.Mesh(np.array([[-1.0, -1, 0], [1, -1, 0], [0, 1, 0]]), np.array([[0, 1, 2]]))
+    scene = phongrast.Scene.from_mesh(mesh, 20, 30)
+    scene.camera = phongrast.Camera.from_opencv(K, opencv_pose())
+    scene.frame()
+    assert scene.camera.model == "look_at"
+    image, stats = phongrast.render(scene)
+    assert stats["triangles_drawn"] == 1
