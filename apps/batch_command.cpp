@@ -16,7 +16,7 @@ namespace phongrast::cli {
 void add_batch_command(CLI::App& app, BatchCommand& command) {
     CLI::App* batch = app.add_subcommand(
         "batch",
-        "Render every job of a JSON Lines manifest (one scene, inline scene or turntable mesh per line) into "
+        "Render every job of a JSON Lines manifest (one scene, inline scene, or mesh seen from several views, per line) into "
         "OUTDIR, or one shard of it; skips jobs whose images exist. See docs/batch.md.");
     batch->add_option("manifest", command.manifest, "Manifest, one JSON job per line")->required();
     batch->add_option("-o,--output", command.output_folder, "Output folder (created if missing)")->required();

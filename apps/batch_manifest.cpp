@@ -78,8 +78,8 @@ public:
     }
 
     void reject_unknown_fields() const {
-        std::set<std::string> known = {"scene", "mesh", "views", "elevation", "shader", "lighting", "size", "samples",
-                                       "output"};
+        std::set<std::string> known = {"scene", "mesh", "views", "elevation", "elevations", "layout", "shader",
+                                       "lighting", "size", "samples", "output"};
         std::string named;  // the rendering options' names, from the library's table
         for (const NamedOption& option : named_options()) {
             known.insert(option.key);
@@ -87,8 +87,8 @@ public:
         }
         for (auto it = object_.begin(); it != object_.end(); ++it) {
             if (known.count(it.key()) == 0) {
-                fail(it.key(), "unknown field; expected scene, mesh, views, elevation, shader, lighting, size, "
-                               "samples" + named + " or output");
+                fail(it.key(), "unknown field; expected scene, mesh, views, elevation, elevations, layout, shader, "
+                               "lighting, size, samples" + named + " or output");
             }
         }
     }
@@ -139,6 +139,59 @@ JobSettings read_settings(const LineReader& reader, const JobSettings& defaults)
     return settings;
 }
 
+// An elevation in degrees, strictly between -90 and 90: straight up or down
+// the look-at camera's up vector would be parallel to its view.
+double read_elevation(const LineReader& reader, const char* field, const json& value) {
+    if (!value.is_number() || !(value.get<double>() > -90.0 && value.get<double>() < 90.0)) {
+        reader.fail(field, "expected degrees between -90 and 90 (exclusive), got " + describe(value));
+    }
+    return value.get<double>();
+}
+
+// "layout", "views", "elevation" and "elevations" of a mesh job.
+void read_views(const LineReader& reader, const json& object, BatchJob& job) {
+    for (const char* field : {"views", "elevation", "elevations", "layout"}) {
+        if (job.kind != JobKind::mesh && object.contains(field)) reader.fail(field, "only a \"mesh\" job has views");
+    }
+    const std::string layout = reader.text("layout");
+    if (layout == "sphere") {
+        job.layout = ViewLayout::sphere;
+    } else if (layout == "hemisphere") {
+        job.layout = ViewLayout::hemisphere;
+    } else if (!layout.empty() && layout != "turntable") {
+        reader.fail("layout", "expected \"turntable\", \"sphere\" or \"hemisphere\", got \"" + layout + "\"");
+    }
+    const int views = reader.whole_number("views", 1, max_views).value_or(1);
+    if (job.layout != ViewLayout::turntable) {
+        for (const char* field : {"elevation", "elevations"}) {
+            if (object.contains(field)) reader.fail(field, "a " + layout + " layout chooses its own elevations");
+        }
+        job.views = views;
+        return;
+    }
+    if (object.contains("elevation") && object.contains("elevations")) {
+        reader.fail("elevations", "both \"elevation\" and \"elevations\"; expected one of them");
+    }
+    if (const json* one = reader.find("elevation")) job.elevations = {read_elevation(reader, "elevation", *one)};
+    if (const json* rings = reader.find("elevations")) {
+        if (!rings->is_array() || rings->empty()) {
+            reader.fail("elevations", "expected a non-empty array of degrees, got " + describe(*rings));
+        }
+        job.elevations.clear();
+        for (std::size_t i = 0; i < rings->size(); ++i) {
+            const std::string field = "elevations/" + std::to_string(i);
+            job.elevations.push_back(read_elevation(reader, field.c_str(), (*rings)[i]));
+        }
+    }
+    const long long total = static_cast<long long>(views) * static_cast<long long>(job.elevations.size());
+    if (total > max_views) {
+        reader.fail("elevations", std::to_string(views) + " views x " + std::to_string(job.elevations.size()) +
+                                      " rings = " + std::to_string(total) + " images; at most " +
+                                      std::to_string(max_views) + " per job");
+    }
+    job.views = static_cast<int>(total);
+}
+
 void read_source(const LineReader& reader, const json& object, const std::string& folder, BatchJob& job) {
     const json* scene = reader.find("scene");
     const json* mesh = reader.find("mesh");
@@ -157,15 +210,7 @@ void read_source(const LineReader& reader, const json& object, const std::string
         job.kind = JobKind::mesh;
         job.path = (fs::path(folder) / reader.text("mesh")).lexically_normal().string();
     }
-    const bool turntable = job.kind == JobKind::mesh;
-    for (const char* field : {"views", "elevation"}) {
-        if (!turntable && object.contains(field)) reader.fail(field, "only a \"mesh\" job has views");
-    }
-    job.views = reader.whole_number("views", 1, max_views).value_or(1);
-    job.elevation = reader.number("elevation").value_or(0.0);
-    if (!(job.elevation > -90.0 && job.elevation < 90.0)) {
-        reader.fail("elevation", "expected degrees between -90 and 90 (exclusive), got " + object["elevation"].dump());
-    }
+    read_views(reader, object, job);
 }
 
 std::string default_pattern(const BatchJob& job) {
