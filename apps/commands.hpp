@@ -14,6 +14,8 @@ namespace phongrast::cli {
 
 /// --png-compression fast|default|small (png_compression_flag.cpp), into `value`.
 void add_png_compression_flag(CLI::App& command, std::string& value);
+/// --aov-files LIST and --depth-scale S (dataset_files_flags.cpp).
+void add_dataset_file_flags(CLI::App& command, std::string& files, double& depth_scale);
 
 struct RenderCommand {
     SceneFlags scene;
@@ -22,6 +24,8 @@ struct RenderCommand {
     std::string aovs;          ///< --aov: "depth,normal,id,alpha" into one EXR
     bool transparent = false;  ///< --transparent: PNG with alpha, background transparent
     std::string png_compression = "default";
+    std::string dataset_files;   ///< --aov-files: "depth,mask,..." next to the image
+    double depth_scale = 0.001;  ///< --depth-scale: scene units per step of NAME.depth.png
 };
 void add_render_command(CLI::App& app, RenderCommand& command);
 int run_render(const RenderCommand& command);
