@@ -46,12 +46,14 @@ void add_batch_command(CLI::App& app, BatchCommand& command) {
             ->check(CLI::IsMember(accepted_names(option)));
     }
     add_png_compression_flag(*batch, command.png_compression);
+    add_dataset_file_flags(*batch, command.defaults.dataset_files, command.depth_scale);
     batch->add_flag("-q,--quiet", command.quiet, "Print nothing but errors");
 }
 
 int run_batch(const BatchCommand& command) {
     JobSettings defaults = command.defaults;
     if (command.samples > 0) defaults.samples = command.samples;
+    if (command.depth_scale > 0.0) defaults.depth_scale = command.depth_scale;
     // Check the command-line defaults as a manifest line would be checked.
     parse_manifest("{\"mesh\": \"-.obj\"}", "command line", ".", defaults);
     const Manifest manifest = read_manifest(command.manifest, defaults);

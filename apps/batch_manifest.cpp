@@ -79,7 +79,7 @@ public:
 
     void reject_unknown_fields() const {
         std::set<std::string> known = {"scene", "mesh", "views", "elevation", "elevations", "layout", "shader",
-                                       "lighting", "size", "samples", "output"};
+                                       "lighting", "size", "samples", "output", "aov_files", "depth_scale"};
         std::string named;  // the rendering options' names, from the library's table
         for (const NamedOption& option : named_options()) {
             known.insert(option.key);
@@ -88,7 +88,7 @@ public:
         for (auto it = object_.begin(); it != object_.end(); ++it) {
             if (known.count(it.key()) == 0) {
                 fail(it.key(), "unknown field; expected scene, mesh, views, elevation, elevations, layout, shader, "
-                               "lighting, size, samples" + named + " or output");
+                               "lighting, size, samples, aov_files, depth_scale" + named + " or output");
             }
         }
     }
@@ -107,6 +107,16 @@ JobSettings read_settings(const LineReader& reader, const JobSettings& defaults)
         if (const std::string name = reader.text(option.key.c_str()); !name.empty()) settings.options[option.key] = name;
     }
     if (const std::optional<int> samples = reader.whole_number("samples", 1, 16)) settings.samples = samples;
+    if (const std::string files = reader.text("aov_files"); !files.empty()) settings.dataset_files = files;
+    if (const std::optional<double> scale = reader.number("depth_scale")) {
+        if (!(*scale > 0.0)) reader.fail("depth_scale", "expected a positive number of scene units per step");
+        settings.depth_scale = scale;
+    }
+    try {
+        if (!settings.dataset_files.empty()) io::parse_dataset_files(settings.dataset_files);
+    } catch (const std::invalid_argument& error) {
+        reader.fail("aov_files", error.what());
+    }
     // Names are checked now, so that a typo stops the whole batch before it starts.
     try {
         if (!settings.shader.empty()) parse_shader(settings.shader);
@@ -259,6 +269,8 @@ BatchJob parse_line(const std::string& text, const std::string& name, int line, 
     job.line = line;
     read_source(reader, object, folder, job);
     job.settings = read_settings(reader, defaults);
+    if (!job.settings.dataset_files.empty()) job.dataset_files = io::parse_dataset_files(job.settings.dataset_files);
+    if (job.settings.depth_scale) job.dataset_options.depth_scale = *job.settings.depth_scale;
     read_outputs(reader, job);
     return job;
 }
@@ -312,13 +324,15 @@ Manifest parse_manifest(const std::string& text, const std::string& name, const 
         ++line;
         if (content.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank lines are allowed
         BatchJob job = parse_line(content, name, line, folder, defaults);
-        for (const std::string& output : job.outputs) {
-            const auto [it, inserted] = writer_of.emplace(output, line);
-            if (!inserted) {
-                throw io::FileError(name + ":" + std::to_string(line) + ": /output: '" + output +
-                                    "' is also written by line " + std::to_string(it->second) +
-                                    (it->second == line ? " (add {view} to the pattern)" : "") +
-                                    "; every image needs its own name");
+        for (std::size_t view = 0; view < job.outputs.size(); ++view) {
+            for (const std::string& output : job.files_of_view(view)) {
+                const auto [it, inserted] = writer_of.emplace(output, line);
+                if (!inserted) {
+                    throw io::FileError(name + ":" + std::to_string(line) + ": /output: '" + output +
+                                        "' is also written by line " + std::to_string(it->second) +
+                                        (it->second == line ? " (add {view} to the pattern)" : "") +
+                                        "; every image needs its own name");
+                }
             }
         }
         manifest.jobs.push_back(std::move(job));
@@ -326,10 +340,18 @@ Manifest parse_manifest(const std::string& text, const std::string& name, const 
     return manifest;
 }
 
+std::vector<std::string> BatchJob::files_of_view(std::size_t view) const {
+    std::vector<std::string> files = io::dataset_file_paths(outputs[view], dataset_files);
+    files.push_back(outputs[view]);
+    return files;
+}
+
 bool outputs_exist(const BatchJob& job, const std::string& output_folder) {
     std::error_code error;
-    for (const std::string& output : job.outputs) {
-        if (!fs::is_regular_file(fs::path(output_folder) / output, error)) return false;
+    for (std::size_t view = 0; view < job.outputs.size(); ++view) {
+        for (const std::string& output : job.files_of_view(view)) {
+            if (!fs::is_regular_file(fs::path(output_folder) / output, error)) return false;
+        }
     }
     return true;
 }

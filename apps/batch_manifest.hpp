@@ -6,6 +6,7 @@
 //   {"mesh": "chair.obj", "views": 8, "elevations": [-15, 30]}  one turntable ring per elevation
 //   {"mesh": "chair.obj", "layout": "sphere", "views": 50}  views spread evenly over a sphere
 //   {"mesh": "chair.obj", "layout": "hemisphere", "views": 50}   ... over the upper half
+//   {"mesh": "cup.obj", "aov_files": "mask,depth16", "depth_scale": 0.0005}   files next to each image
 //
 // Optional on every line: "shader", "lighting", "size" ("WxH"), "samples",
 // the rendering options of the library's table of names (option_names.hpp:
@@ -30,6 +31,8 @@
 #include <string>
 #include <vector>
 
+#include "phongrast/io/dataset_files.hpp"
+
 namespace phongrast::cli {
 
 /// Settings a manifest line (or the command line, for every job) may override.
@@ -41,6 +44,9 @@ struct JobSettings {
     std::optional<int> samples;
     /// Named rendering options by key (option_names.hpp), "mode" among them.
     std::map<std::string, std::string> options;
+    /// Files next to each image (render's --aov-files); empty: none.
+    std::string dataset_files;
+    std::optional<double> depth_scale;  ///< scene units per step of NAME.depth.png
 };
 
 enum class JobKind { scene_file, inline_scene, mesh };
@@ -68,6 +74,12 @@ struct BatchJob {
     std::vector<double> elevations{0.0};
     JobSettings settings;     ///< the line's fields over the command line's
     std::vector<std::string> outputs;  ///< one per view, relative to the output folder
+    io::DatasetFiles dataset_files;    ///< written next to each output (settings.dataset_files parsed)
+    io::DatasetFileOptions dataset_options;
+
+    /// Every file of view `view`: its dataset files, then its image (written
+    /// last, so an existing image means a complete view).
+    std::vector<std::string> files_of_view(std::size_t view) const;
 };
 
 struct Manifest {

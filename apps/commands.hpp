@@ -59,6 +59,7 @@ struct BatchCommand {
     int samples = 0;      ///< 0: not given
     JobSettings defaults;  ///< --shader, --lighting, --size and the named options (--mode, ...)
     std::string png_compression = "default";
+    double depth_scale = 0.0;  ///< --depth-scale; 0: not given
 };
 void add_batch_command(CLI::App& app, BatchCommand& command);
 int run_batch(const BatchCommand& command);

@@ -79,20 +79,12 @@ int run_render(const RenderCommand& command) {
         } catch (const std::invalid_argument& error) {
             throw std::invalid_argument(std::string("--") + error.what());
         }
-        const std::vector<std::size_t> firsts = io::object_first_triangles(prepared.scene);
-        std::size_t triangles = prepared.scene.mesh.triangles.size();
-        for (const SceneObject& object : prepared.scene.objects) triangles += object.mesh ? object.mesh->triangles.size() : 0;
         try {
-            io::check_dataset_files(dataset_files, dataset_options, triangles, firsts.size());
+            io::check_dataset_files(dataset_files, dataset_options, prepared.scene);
         } catch (const std::invalid_argument& error) {
             throw std::invalid_argument(std::string("--") + error.what());
         }
-        const AovRequest planes = dataset_files.planes();
-        AovRequest& aovs = prepared.options.aovs;
-        aovs.depth |= planes.depth;
-        aovs.normal |= planes.normal;
-        aovs.id |= planes.id;
-        aovs.alpha |= planes.alpha;
+        dataset_files.add_planes_to(prepared.options.aovs);
     }
     stop_if_interrupted();
 

@@ -85,6 +85,14 @@ AovRequest DatasetFiles::planes() const {
     return request;
 }
 
+void DatasetFiles::add_planes_to(AovRequest& aovs) const {
+    const AovRequest needed = planes();
+    aovs.depth = aovs.depth || needed.depth;
+    aovs.normal = aovs.normal || needed.normal;
+    aovs.id = aovs.id || needed.id;
+    aovs.alpha = aovs.alpha || needed.alpha;
+}
+
 DatasetFiles parse_dataset_files(std::string_view text) {
     DatasetFiles files;
     std::size_t start = 0;
@@ -151,6 +159,12 @@ std::vector<std::size_t> object_first_triangles(const Scene& scene) {
         triangles += object.mesh ? object.mesh->triangles.size() : 0;
     }
     return first;
+}
+
+void check_dataset_files(const DatasetFiles& files, const DatasetFileOptions& options, const Scene& scene) {
+    std::size_t triangles = scene.mesh.triangles.size();
+    for (const SceneObject& object : scene.objects) triangles += object.mesh ? object.mesh->triangles.size() : 0;
+    check_dataset_files(files, options, triangles, object_first_triangles(scene).size());
 }
 
 void write_dataset_files(const AovPlanes& planes, const std::vector<std::size_t>& object_first_triangles,

@@ -37,6 +37,8 @@ struct DatasetFiles {
     bool any() const { return depth || depth16 || mask || id || normal || object; }
     /// The extra planes the render must fill for these files.
     AovRequest planes() const;
+    /// Adds planes() to what `aovs` already asks for.
+    void add_planes_to(AovRequest& aovs) const;
 };
 
 /// "depth,depth16,mask,id,normal,object" (any subset, comma-separated);
@@ -62,6 +64,8 @@ std::vector<std::string> dataset_file_paths(const std::string& colour_path, cons
 /// rendering.
 void check_dataset_files(const DatasetFiles& files, const DatasetFileOptions& options, std::size_t triangles,
                          std::size_t objects);
+/// The same for the triangles and objects of `scene`.
+void check_dataset_files(const DatasetFiles& files, const DatasetFileOptions& options, const Scene& scene);
 
 /// The index of each object's first triangle in the render's triangle list
 /// (the id output's numbering): {0} for a scene of one mesh, else the running
