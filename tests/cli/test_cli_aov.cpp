@@ -49,14 +49,17 @@ std::map<std::string, std::string> snapshot(const TemporaryFolder& folder) {
     return files;
 }
 
-// Starts `phongrast ARGUMENTS...` in the folder, sends SIGINT after `delay`, and returns its exit status.
-int interrupt_after(const TemporaryFolder& folder, std::vector<std::string> arguments, std::chrono::milliseconds delay) {
+// Starts `phongrast ARGUMENTS...` in the folder, sends SIGINT after `delay`, and returns its exit status;
+// its standard error goes to `error_file` (a path).
+int interrupt_after(const TemporaryFolder& folder, std::vector<std::string> arguments, std::chrono::milliseconds delay,
+                    const std::string& error_file = "/dev/null") {
     const pid_t child = fork();
     if (child == 0) {
         if (chdir(folder.file("").c_str()) != 0) _exit(127);
         const int null = open("/dev/null", O_WRONLY);
+        const int errors = open(error_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         dup2(null, STDOUT_FILENO);
-        dup2(null, STDERR_FILENO);
+        dup2(errors, STDERR_FILENO);
         std::vector<char*> argv;
         static std::string program = PHONGRAST_CLI;
         argv.push_back(program.data());
@@ -164,6 +167,23 @@ TEST_CASE("Ctrl-C during render or sheet exits 130 and leaves the folder as it w
     CHECK(snapshot(folder) == before);
     CHECK(interrupt_after(folder, {"sheet", default_scene, "--size", "1536x1536", "--samples", "2", "-o", "sheet.png"},
                           std::chrono::milliseconds(400)) == 130);
+    CHECK(snapshot(folder) == before);
+}
+
+TEST_CASE("Ctrl-C while the mesh loads exits 130 with a message, and writes nothing") {
+    TemporaryFolder folder;
+    // 1.3 million triangles: loading takes a few hundred milliseconds, and
+    // the signal is sent within about 10 ms of the handler's installation,
+    // which comes just before loading starts.
+    REQUIRE(run_cli(folder, "generate --segments 16000 --sides 40 -o big.obj").status == 0);
+    std::filesystem::remove(folder.file("stdout.txt"));
+    std::filesystem::remove(folder.file("stderr.txt"));
+    const auto before = snapshot(folder);
+    const std::string errors = folder.file("interrupt-errors.txt");
+    CHECK(interrupt_after(folder, {"render", "big.obj", "--size", "64x64", "-o", "big.png"}, std::chrono::milliseconds(0),
+                          errors) == 130);
+    CHECK(read_text(errors).find("interrupted; no output written") != std::string::npos);
+    std::filesystem::remove(errors);  // the test's own capture
     CHECK(snapshot(folder) == before);
 }
 
