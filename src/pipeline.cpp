@@ -139,7 +139,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, sort, memory.painter,
                   progress, tie_rank);
     if (sort) stats.triangles_sorted += memory.painter.sorted.size();
-    bin_draws(memory.draws, memory.painter, rows, memory.binning, memory.bins);
+    bin_draws(memory.draws, memory.painter, rows, memory.binning, memory.bins, progress.poll_function());
 
     progress.begin_stage(0.4, out.aov_planes.any() ? 0.9 : 1.0, static_cast<std::size_t>(memory.bins.bands));
     fill_bins(scene, options, fill_plan, memory.bins, rows, columns, memory.fill, out.image, stats, progress);
