@@ -165,7 +165,7 @@ TEST_CASE("a screen-aligned textured quad shows the bilinear lookup at each pixe
     }
 }
 
-TEST_CASE("t = 0 is the image's bottom row; nearest takes the texel under the sample") {
+TEST_CASE("t = 0 is the image's bottom row, and nearest takes the texel under the sample") {
     // Top row red, bottom row blue.
     auto image = std::make_shared<TextureImage>();
     image->rows = 2;
@@ -277,7 +277,7 @@ TEST_CASE("a slanted quad: exact mode interpolates (s, t) perspective-correct, s
     }
 }
 
-TEST_CASE("supersampling averages textured samples; faces without texture coordinates have T = 1") {
+TEST_CASE("supersampling averages textured samples, and faces without texture coordinates have T = 1") {
     const auto image = numbered_texture(3, 3);
     const TextureMap map = map_of(image, TextureWrap::repeat, TextureWrap::repeat);
     const glm::dvec3 corners[4] = {{-0.5, -0.5, 0.0}, {0.5, -0.5, 0.0}, {0.5, 0.5, 0.0}, {-0.5, 0.5, 0.0}};
