@@ -70,7 +70,7 @@ TEST_CASE("batch writes each image byte for byte as `phongrast render` does") {
     CHECK(files.at("t/1.png") != files.at("t/0.png"));
 }
 
-TEST_CASE("batch writes dataset files (aov_files) as `render --aov-files` does; a missing one makes the job run again") {
+TEST_CASE("batch writes dataset files (aov_files) as `render --aov-files` does, a missing one makes the job run again") {
     TemporaryFolder folder;
     generate_mesh(folder, "knot.obj", 60, 8);
     folder.write("jobs.jsonl",
@@ -124,7 +124,7 @@ TEST_CASE("a malformed manifest line stops the batch before anything is written,
     CHECK_THAT(bad_shard.err, Catch::Contains("--shard: expected I/N"));
 }
 
-TEST_CASE("a bad mesh fails its own job only; the log, stderr and --status name it; exit status 1") {
+TEST_CASE("a bad mesh fails its own job only, the log, stderr and --status name it, exit status 1") {
     TemporaryFolder folder;
     generate_mesh(folder, "knot.obj", 40, 6);
     folder.write("broken.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n");

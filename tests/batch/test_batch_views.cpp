@@ -133,7 +133,7 @@ TEST_CASE("a sphere layout spreads its views evenly over every direction, determ
     for (std::size_t i = 0; i < 50; ++i) CHECK(again.cameras[i].eye == scenes.cameras[i].eye);
 }
 
-TEST_CASE("a hemisphere layout stays above the horizontal; one view of any layout is the framing") {
+TEST_CASE("a hemisphere layout stays above the horizontal, one view of any layout is the framing") {
     const Scene framed = io::frame_mesh(long_box(), 48, 64);
     const glm::dvec3 centre = framed.camera.lookat;
     REQUIRE(framed.camera.eye.y == Approx(centre.y));  // the framing looks horizontally
