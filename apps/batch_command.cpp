@@ -16,7 +16,7 @@ namespace phongrast::cli {
 void add_batch_command(CLI::App& app, BatchCommand& command) {
     CLI::App* batch = app.add_subcommand(
         "batch",
-        "Render every job of a JSON Lines manifest (one scene, inline scene or turntable mesh per line) into "
+        "Render every job of a JSON Lines manifest (one scene, inline scene, or mesh seen from several views, per line) into "
         "OUTDIR, or one shard of it; skips jobs whose images exist. See docs/batch.md.");
     batch->add_option("manifest", command.manifest, "Manifest, one JSON job per line")->required();
     batch->add_option("-o,--output", command.output_folder, "Output folder (created if missing)")->required();
@@ -46,12 +46,14 @@ void add_batch_command(CLI::App& app, BatchCommand& command) {
             ->check(CLI::IsMember(accepted_names(option)));
     }
     add_png_compression_flag(*batch, command.png_compression);
+    add_dataset_file_flags(*batch, command.defaults.dataset_files, command.depth_scale);
     batch->add_flag("-q,--quiet", command.quiet, "Print nothing but errors");
 }
 
 int run_batch(const BatchCommand& command) {
     JobSettings defaults = command.defaults;
     if (command.samples > 0) defaults.samples = command.samples;
+    if (command.depth_scale > 0.0) defaults.depth_scale = command.depth_scale;
     // Check the command-line defaults as a manifest line would be checked.
     parse_manifest("{\"mesh\": \"-.obj\"}", "command line", ".", defaults);
     const Manifest manifest = read_manifest(command.manifest, defaults);

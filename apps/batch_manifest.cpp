@@ -78,8 +78,8 @@ public:
     }
 
     void reject_unknown_fields() const {
-        std::set<std::string> known = {"scene", "mesh", "views", "elevation", "shader", "lighting", "size", "samples",
-                                       "output"};
+        std::set<std::string> known = {"scene", "mesh", "views", "elevation", "elevations", "layout", "shader",
+                                       "lighting", "size", "samples", "output", "aov_files", "depth_scale"};
         std::string named;  // the rendering options' names, from the library's table
         for (const NamedOption& option : named_options()) {
             known.insert(option.key);
@@ -87,8 +87,8 @@ public:
         }
         for (auto it = object_.begin(); it != object_.end(); ++it) {
             if (known.count(it.key()) == 0) {
-                fail(it.key(), "unknown field; expected scene, mesh, views, elevation, shader, lighting, size, "
-                               "samples" + named + " or output");
+                fail(it.key(), "unknown field; expected scene, mesh, views, elevation, elevations, layout, shader, "
+                               "lighting, size, samples, aov_files, depth_scale" + named + " or output");
             }
         }
     }
@@ -107,6 +107,16 @@ JobSettings read_settings(const LineReader& reader, const JobSettings& defaults)
         if (const std::string name = reader.text(option.key.c_str()); !name.empty()) settings.options[option.key] = name;
     }
     if (const std::optional<int> samples = reader.whole_number("samples", 1, 16)) settings.samples = samples;
+    if (const std::string files = reader.text("aov_files"); !files.empty()) settings.dataset_files = files;
+    if (const std::optional<double> scale = reader.number("depth_scale")) {
+        if (!(*scale > 0.0)) reader.fail("depth_scale", "expected a positive number of scene units per step");
+        settings.depth_scale = scale;
+    }
+    try {
+        if (!settings.dataset_files.empty()) io::parse_dataset_files(settings.dataset_files);
+    } catch (const std::invalid_argument& error) {
+        reader.fail("aov_files", error.what());
+    }
     // Names are checked now, so that a typo stops the whole batch before it starts.
     try {
         if (!settings.shader.empty()) parse_shader(settings.shader);
@@ -139,6 +149,59 @@ JobSettings read_settings(const LineReader& reader, const JobSettings& defaults)
     return settings;
 }
 
+// An elevation in degrees, strictly between -90 and 90: straight up or down
+// the look-at camera's up vector would be parallel to its view.
+double read_elevation(const LineReader& reader, const char* field, const json& value) {
+    if (!value.is_number() || !(value.get<double>() > -90.0 && value.get<double>() < 90.0)) {
+        reader.fail(field, "expected degrees between -90 and 90 (exclusive), got " + describe(value));
+    }
+    return value.get<double>();
+}
+
+// "layout", "views", "elevation" and "elevations" of a mesh job.
+void read_views(const LineReader& reader, const json& object, BatchJob& job) {
+    for (const char* field : {"views", "elevation", "elevations", "layout"}) {
+        if (job.kind != JobKind::mesh && object.contains(field)) reader.fail(field, "only a \"mesh\" job has views");
+    }
+    const std::string layout = reader.text("layout");
+    if (layout == "sphere") {
+        job.layout = ViewLayout::sphere;
+    } else if (layout == "hemisphere") {
+        job.layout = ViewLayout::hemisphere;
+    } else if (!layout.empty() && layout != "turntable") {
+        reader.fail("layout", "expected \"turntable\", \"sphere\" or \"hemisphere\", got \"" + layout + "\"");
+    }
+    const int views = reader.whole_number("views", 1, max_views).value_or(1);
+    if (job.layout != ViewLayout::turntable) {
+        for (const char* field : {"elevation", "elevations"}) {
+            if (object.contains(field)) reader.fail(field, "a " + layout + " layout chooses its own elevations");
+        }
+        job.views = views;
+        return;
+    }
+    if (object.contains("elevation") && object.contains("elevations")) {
+        reader.fail("elevations", "both \"elevation\" and \"elevations\"; expected one of them");
+    }
+    if (const json* one = reader.find("elevation")) job.elevations = {read_elevation(reader, "elevation", *one)};
+    if (const json* rings = reader.find("elevations")) {
+        if (!rings->is_array() || rings->empty()) {
+            reader.fail("elevations", "expected a non-empty array of degrees, got " + describe(*rings));
+        }
+        job.elevations.clear();
+        for (std::size_t i = 0; i < rings->size(); ++i) {
+            const std::string field = "elevations/" + std::to_string(i);
+            job.elevations.push_back(read_elevation(reader, field.c_str(), (*rings)[i]));
+        }
+    }
+    const long long total = static_cast<long long>(views) * static_cast<long long>(job.elevations.size());
+    if (total > max_views) {
+        reader.fail("elevations", std::to_string(views) + " views x " + std::to_string(job.elevations.size()) +
+                                      " rings = " + std::to_string(total) + " images; at most " +
+                                      std::to_string(max_views) + " per job");
+    }
+    job.views = static_cast<int>(total);
+}
+
 void read_source(const LineReader& reader, const json& object, const std::string& folder, BatchJob& job) {
     const json* scene = reader.find("scene");
     const json* mesh = reader.find("mesh");
@@ -157,15 +220,7 @@ void read_source(const LineReader& reader, const json& object, const std::string
         job.kind = JobKind::mesh;
         job.path = (fs::path(folder) / reader.text("mesh")).lexically_normal().string();
     }
-    const bool turntable = job.kind == JobKind::mesh;
-    for (const char* field : {"views", "elevation"}) {
-        if (!turntable && object.contains(field)) reader.fail(field, "only a \"mesh\" job has views");
-    }
-    job.views = reader.whole_number("views", 1, max_views).value_or(1);
-    job.elevation = reader.number("elevation").value_or(0.0);
-    if (!(job.elevation > -90.0 && job.elevation < 90.0)) {
-        reader.fail("elevation", "expected degrees between -90 and 90 (exclusive), got " + object["elevation"].dump());
-    }
+    read_views(reader, object, job);
 }
 
 std::string default_pattern(const BatchJob& job) {
@@ -214,6 +269,8 @@ BatchJob parse_line(const std::string& text, const std::string& name, int line, 
     job.line = line;
     read_source(reader, object, folder, job);
     job.settings = read_settings(reader, defaults);
+    if (!job.settings.dataset_files.empty()) job.dataset_files = io::parse_dataset_files(job.settings.dataset_files);
+    if (job.settings.depth_scale) job.dataset_options.depth_scale = *job.settings.depth_scale;
     read_outputs(reader, job);
     return job;
 }
@@ -267,13 +324,15 @@ Manifest parse_manifest(const std::string& text, const std::string& name, const 
         ++line;
         if (content.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank lines are allowed
         BatchJob job = parse_line(content, name, line, folder, defaults);
-        for (const std::string& output : job.outputs) {
-            const auto [it, inserted] = writer_of.emplace(output, line);
-            if (!inserted) {
-                throw io::FileError(name + ":" + std::to_string(line) + ": /output: '" + output +
-                                    "' is also written by line " + std::to_string(it->second) +
-                                    (it->second == line ? " (add {view} to the pattern)" : "") +
-                                    "; every image needs its own name");
+        for (std::size_t view = 0; view < job.outputs.size(); ++view) {
+            for (const std::string& output : job.files_of_view(view)) {
+                const auto [it, inserted] = writer_of.emplace(output, line);
+                if (!inserted) {
+                    throw io::FileError(name + ":" + std::to_string(line) + ": /output: '" + output +
+                                        "' is also written by line " + std::to_string(it->second) +
+                                        (it->second == line ? " (add {view} to the pattern)" : "") +
+                                        "; every image needs its own name");
+                }
             }
         }
         manifest.jobs.push_back(std::move(job));
@@ -281,10 +340,18 @@ Manifest parse_manifest(const std::string& text, const std::string& name, const 
     return manifest;
 }
 
+std::vector<std::string> BatchJob::files_of_view(std::size_t view) const {
+    std::vector<std::string> files = io::dataset_file_paths(outputs[view], dataset_files);
+    files.push_back(outputs[view]);
+    return files;
+}
+
 bool outputs_exist(const BatchJob& job, const std::string& output_folder) {
     std::error_code error;
-    for (const std::string& output : job.outputs) {
-        if (!fs::is_regular_file(fs::path(output_folder) / output, error)) return false;
+    for (std::size_t view = 0; view < job.outputs.size(); ++view) {
+        for (const std::string& output : job.files_of_view(view)) {
+            if (!fs::is_regular_file(fs::path(output_folder) / output, error)) return false;
+        }
     }
     return true;
 }

@@ -3,6 +3,10 @@
 //   {"scene": "figures/knot.json"}                          a scene file
 //   {"scene": {"mesh": "knot.obj", "camera": {...}, ...}}   a scene written inline
 //   {"mesh": "chair.obj", "views": 24, "elevation": 20}     a turntable around the framed mesh
+//   {"mesh": "chair.obj", "views": 8, "elevations": [-15, 30]}  one turntable ring per elevation
+//   {"mesh": "chair.obj", "layout": "sphere", "views": 50}  views spread evenly over a sphere
+//   {"mesh": "chair.obj", "layout": "hemisphere", "views": 50}   ... over the upper half
+//   {"mesh": "cup.obj", "aov_files": "mask,depth16", "depth_scale": 0.0005}   files next to each image
 //
 // Optional on every line: "shader", "lighting", "size" ("WxH"), "samples",
 // the rendering options of the library's table of names (option_names.hpp:
@@ -27,6 +31,8 @@
 #include <string>
 #include <vector>
 
+#include "phongrast/io/dataset_files.hpp"
+
 namespace phongrast::cli {
 
 /// Settings a manifest line (or the command line, for every job) may override.
@@ -38,9 +44,19 @@ struct JobSettings {
     std::optional<int> samples;
     /// Named rendering options by key (option_names.hpp), "mode" among them.
     std::map<std::string, std::string> options;
+    /// Files next to each image (render's --aov-files); empty: none.
+    std::string dataset_files;
+    std::optional<double> depth_scale;  ///< scene units per step of NAME.depth.png
 };
 
 enum class JobKind { scene_file, inline_scene, mesh };
+
+/// Where a mesh job's cameras are (batch_views.hpp computes them).
+enum class ViewLayout {
+    turntable,   ///< rings around the vertical axis, one per elevation
+    sphere,      ///< a Fibonacci lattice over the whole sphere of directions
+    hemisphere,  ///< the same over the upper half (elevations above 0)
+};
 
 struct BatchJob {
     int line = 0;  ///< 1-based line of the manifest
@@ -48,10 +64,22 @@ struct BatchJob {
     std::string path;         ///< scene file or mesh, resolved against the manifest's folder
     std::string scene_json;   ///< inline_scene: the scene object as JSON text
     std::string folder;       ///< the manifest's folder: an inline scene's "mesh" is relative to it
-    int views = 1;            ///< mesh: views around the vertical axis, 360 / views degrees apart
-    double elevation = 0.0;   ///< mesh: degrees above the horizontal, in (-90, 90)
+    ViewLayout layout = ViewLayout::turntable;  ///< mesh jobs only
+    /// Images of the job: for a turntable, views per ring x rings; for a
+    /// sphere or hemisphere, the lattice's points.
+    int views = 1;
+    /// Turntable: the rings' elevations in degrees above the horizontal, each
+    /// in (-90, 90), ring by ring in this order; views / elevations.size()
+    /// views per ring, 360 / that degrees apart.
+    std::vector<double> elevations{0.0};
     JobSettings settings;     ///< the line's fields over the command line's
     std::vector<std::string> outputs;  ///< one per view, relative to the output folder
+    io::DatasetFiles dataset_files;    ///< written next to each output (settings.dataset_files parsed)
+    io::DatasetFileOptions dataset_options;
+
+    /// Every file of view `view`: its dataset files, then its image (written
+    /// last, so an existing image means a complete view).
+    std::vector<std::string> files_of_view(std::size_t view) const;
 };
 
 struct Manifest {

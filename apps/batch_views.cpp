@@ -34,13 +34,35 @@ std::pair<double, double> half_extent(const Mesh& mesh, const Camera& camera, in
 
 }  // namespace
 
-void make_turntable(const Scene& framed, int views, double elevation_degrees, JobScenes& scenes) {
+std::vector<ViewDirection> turntable_directions(int views_per_ring, const std::vector<double>& elevations_degrees) {
+    const double pi = std::acos(-1.0);
+    std::vector<ViewDirection> directions;
+    for (const double degrees : elevations_degrees) {
+        for (int view = 0; view < views_per_ring; ++view) {
+            directions.push_back({2.0 * pi * view / views_per_ring, degrees * pi / 180.0});
+        }
+    }
+    return directions;
+}
+
+std::vector<ViewDirection> lattice_directions(int views, bool upper_half_only) {
+    const double pi = std::acos(-1.0);
+    const double golden_angle = pi * (3.0 - std::sqrt(5.0));
+    std::vector<ViewDirection> directions;
+    for (int i = 0; i < views; ++i) {
+        // Equal-area bands: heights evenly spaced in z give equal areas on the sphere.
+        const double z = upper_half_only ? 1.0 - (i + 0.5) / views : 1.0 - (2.0 * i + 1.0) / views;
+        directions.push_back({std::fmod(i * golden_angle, 2.0 * pi), std::asin(z)});
+    }
+    return directions;
+}
+
+void make_views(const Scene& framed, const std::vector<ViewDirection>& directions, JobScenes& scenes) {
     scenes.cameras.assign(1, framed.camera);
     scenes.lights.assign(1, framed.lights);
-    if (views == 1 && elevation_degrees == 0.0) return;  // render's own framing, untouched
-
-    const double pi = std::acos(-1.0);
-    const double elevation = elevation_degrees * pi / 180.0;
+    if (directions.size() == 1 && directions[0].azimuth == 0.0 && directions[0].elevation == 0.0) {
+        return;  // render's own framing, untouched
+    }
     const glm::dvec3 centre = framed.camera.lookat;
     const int rows = framed.image.rows;
     const int columns = framed.image.columns;
@@ -48,12 +70,13 @@ void make_turntable(const Scene& framed, int views, double elevation_degrees, Jo
     scenes.lights.clear();
     double half_width = 0.0;
     double half_height = 0.0;
-    for (int view = 0; view < views; ++view) {
-        const double azimuth = 2.0 * pi * view / views;
+    for (const ViewDirection& direction : directions) {
         Camera camera = framed.camera;
-        camera.eye = centre + turn(framed.camera.eye - centre, azimuth, elevation);
+        camera.eye = centre + turn(framed.camera.eye - centre, direction.azimuth, direction.elevation);
         std::vector<PointLight> lights = framed.lights;
-        for (PointLight& light : lights) light.position = centre + turn(light.position - centre, azimuth, elevation);
+        for (PointLight& light : lights) {
+            light.position = centre + turn(light.position - centre, direction.azimuth, direction.elevation);
+        }
         const auto [width, height] = half_extent(framed.mesh, camera, rows, columns);
         half_width = std::max(half_width, width);
         half_height = std::max(half_height, height);
@@ -67,6 +90,15 @@ void make_turntable(const Scene& framed, int views, double elevation_degrees, Jo
         camera.sensor_height = sensor_height;
         camera.sensor_width = sensor_height * aspect;
     }
+}
+
+void make_turntable(const Scene& framed, int views, double elevation_degrees, JobScenes& scenes) {
+    make_views(framed, turntable_directions(views, {elevation_degrees}), scenes);
+}
+
+std::vector<ViewDirection> job_directions(const BatchJob& job) {
+    if (job.layout != ViewLayout::turntable) return lattice_directions(job.views, job.layout == ViewLayout::hemisphere);
+    return turntable_directions(job.views / static_cast<int>(job.elevations.size()), job.elevations);
 }
 
 std::shared_ptr<const io::MeshFile> LastMesh::read(const std::string& path) {
@@ -103,7 +135,7 @@ JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes) {
         scenes.prepared = prepare_scene(flags, silent);
     }
     if (job.kind == JobKind::mesh) {
-        make_turntable(scenes.prepared.scene, job.views, job.elevation, scenes);
+        make_views(scenes.prepared.scene, job_directions(job), scenes);
     } else {
         scenes.cameras.assign(1, scenes.prepared.scene.camera);
         scenes.lights.assign(1, scenes.prepared.scene.lights);

@@ -39,14 +39,40 @@ private:
 /// fails, the batch goes on).
 JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes = nullptr);
 
-/// Turntable views of an automatically framed scene: view v looks from
-/// 360 v / views degrees around the vertical (+y) axis through the look-at
-/// point, `elevation` degrees above the horizontal; the lights turn with the
-/// camera, so every view is lit alike. One sensor size fits every vertex in
-/// every view with the framing's 10% margin, so the mesh keeps its size on
-/// screen. With one view and no elevation this is exactly the framing of
-/// `phongrast render mesh.obj`.
+/// Where one view looks from, relative to the automatic framing's view:
+/// turned `azimuth` radians about the vertical (+y) axis through the look-at
+/// point after being tilted up by `elevation` radians.
+struct ViewDirection {
+    double azimuth = 0.0;
+    double elevation = 0.0;
+};
+
+/// Turntable rings: for each elevation (degrees) in order, `views_per_ring`
+/// views 360 / views_per_ring degrees apart, starting at azimuth 0.
+std::vector<ViewDirection> turntable_directions(int views_per_ring, const std::vector<double>& elevations_degrees);
+
+/// `views` directions spread evenly over the sphere (or its upper half) by a
+/// Fibonacci lattice: point i (from the top down) at height
+/// z = 1 - (2i + 1) / views (hemisphere: 1 - (i + 0.5) / views), elevation
+/// asin(z), azimuth i times the golden angle pi (3 - sqrt 5). Deterministic,
+/// no random seed; every elevation is strictly inside (-90, 90) degrees (the
+/// hemisphere's strictly inside (0, 90)), so the look-at up vector is never
+/// parallel to a view.
+std::vector<ViewDirection> lattice_directions(int views, bool upper_half_only);
+
+/// The views of an automatically framed scene, one per direction: the eye
+/// and the lights turn together, so every view is lit alike. One sensor size
+/// fits every vertex in every view with the framing's 10% margin, so the mesh
+/// keeps its size on screen. A single direction of (0, 0) is exactly the
+/// framing of `phongrast render mesh.obj`.
+void make_views(const Scene& framed, const std::vector<ViewDirection>& directions, JobScenes& scenes);
+
+/// A turntable of `views` views at one elevation (degrees): make_views of
+/// turntable_directions(views, {elevation_degrees}).
 void make_turntable(const Scene& framed, int views, double elevation_degrees, JobScenes& scenes);
+
+/// The directions of a mesh job's layout (views, elevations).
+std::vector<ViewDirection> job_directions(const BatchJob& job);
 
 }  // namespace phongrast::cli
 

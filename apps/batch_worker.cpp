@@ -12,6 +12,7 @@
 
 #include "batch_queue.hpp"
 #include "batch_views.hpp"
+#include "phongrast/io/dataset_files.hpp"
 #include "phongrast/io/image_file.hpp"
 
 namespace phongrast::cli {
@@ -51,6 +52,11 @@ struct WriteItem {
     std::size_t position = 0;
     std::optional<Image> image;
     std::string path;
+    /// The view's dataset files (BatchJob::dataset_files), written before the image.
+    io::DatasetFiles dataset_files;
+    io::DatasetFileOptions dataset_options;
+    AovPlanes planes;
+    std::vector<std::size_t> object_first_triangles;
     std::string error;            ///< end of job: why it failed, if it did before writing
     double render_seconds = 0.0;  ///< end of job: its views' render time
 };
@@ -79,6 +85,11 @@ void write_images(std::size_t count, BoundedQueue<WriteItem>& pending, Reporter&
             try {
                 const fs::path folder = fs::path(item.path).parent_path();
                 if (!folder.empty()) fs::create_directories(folder);
+                if (item.dataset_files.any()) {
+                    item.dataset_options.png_compression = image_options.png_compression;
+                    io::write_dataset_files(item.planes, item.object_first_triangles, item.path, item.dataset_files,
+                                            item.dataset_options);
+                }
                 io::write_image(*item.image, item.path, image_options);
             } catch (const std::exception& failure) {
                 error = failure.what();
@@ -104,8 +115,13 @@ void render_job(Renderer& renderer, std::size_t position, const BatchJob& job, L
     end.error = loaded.error;
     if (loaded.scenes) {
         JobScenes& scenes = *loaded.scenes;
-        renderer.set_options(scenes.prepared.options);
         try {
+            const std::vector<std::size_t> object_first_triangles = io::object_first_triangles(scenes.prepared.scene);
+            if (job.dataset_files.any()) {
+                io::check_dataset_files(job.dataset_files, job.dataset_options, scenes.prepared.scene);
+                job.dataset_files.add_planes_to(scenes.prepared.options.aovs);
+            }
+            renderer.set_options(scenes.prepared.options);
             for (std::size_t view = 0; view < scenes.cameras.size(); ++view) {
                 scenes.prepared.scene.camera = scenes.cameras[view];
                 scenes.prepared.scene.lights = scenes.lights[view];
@@ -115,6 +131,12 @@ void render_job(Renderer& renderer, std::size_t position, const BatchJob& job, L
                 image.position = position;
                 image.image = result.image;
                 image.path = (fs::path(output_folder) / job.outputs[view]).string();
+                if (job.dataset_files.any()) {
+                    image.dataset_files = job.dataset_files;
+                    image.dataset_options = job.dataset_options;
+                    image.planes = result.aovs;
+                    image.object_first_triangles = object_first_triangles;
+                }
                 pending.push(std::move(image));
             }
         } catch (const std::exception& error) {

@@ -14,6 +14,8 @@ namespace phongrast::cli {
 
 /// --png-compression fast|default|small (png_compression_flag.cpp), into `value`.
 void add_png_compression_flag(CLI::App& command, std::string& value);
+/// --aov-files LIST and --depth-scale S (dataset_files_flags.cpp).
+void add_dataset_file_flags(CLI::App& command, std::string& files, double& depth_scale);
 
 struct RenderCommand {
     SceneFlags scene;
@@ -22,7 +24,9 @@ struct RenderCommand {
     std::string aovs;          ///< --aov: "depth,normal,id,alpha" into one EXR
     bool transparent = false;  ///< --transparent: PNG with alpha, background transparent
     std::string png_compression = "default";
-    std::string camera_out;    ///< --camera-out: the image's camera as JSON (io/camera_record.hpp)
+    std::string dataset_files;   ///< --aov-files: "depth,mask,..." next to the image
+    double depth_scale = 0.001;  ///< --depth-scale: scene units per step of NAME.depth.png
+    std::string camera_out;      ///< --camera-out: the image's camera as JSON (io/camera_record.hpp)
 };
 void add_render_command(CLI::App& app, RenderCommand& command);
 int run_render(const RenderCommand& command);
@@ -56,6 +60,7 @@ struct BatchCommand {
     int samples = 0;      ///< 0: not given
     JobSettings defaults;  ///< --shader, --lighting, --size and the named options (--mode, ...)
     std::string png_compression = "default";
+    double depth_scale = 0.0;  ///< --depth-scale; 0: not given
 };
 void add_batch_command(CLI::App& app, BatchCommand& command);
 int run_batch(const BatchCommand& command);

@@ -7,6 +7,7 @@
 #include "interrupt.hpp"
 #include "phongrast/io/aov_file.hpp"
 #include "phongrast/io/camera_record.hpp"
+#include "phongrast/io/dataset_files.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/text_file.hpp"
@@ -46,6 +47,7 @@ void add_render_command(CLI::App& app, RenderCommand& command) {
                        "world_to_camera (OpenCV axes), camera_to_world_opengl (OpenGL/Blender axes), the look-at "
                        "form and the near plane; its \"camera\" is readable by --camera");
     add_png_compression_flag(*render, command.png_compression);
+    add_dataset_file_flags(*render, command.dataset_files, command.depth_scale);
     render->add_flag("--transparent", command.transparent,
                      "Write a PNG with an alpha channel: the background transparent, edges partly so");
 }
@@ -72,6 +74,23 @@ int run_render(const RenderCommand& command) {
             throw std::invalid_argument("--transparent: writes a PNG with alpha; give -o NAME.png, not " + output);
         }
         prepared.options.aovs.alpha = true;
+    }
+    io::DatasetFiles dataset_files;
+    io::DatasetFileOptions dataset_options;
+    dataset_options.depth_scale = command.depth_scale;
+    dataset_options.png_compression = io::parse_png_compression(command.png_compression);
+    if (!command.dataset_files.empty()) {
+        try {
+            dataset_files = io::parse_dataset_files(command.dataset_files);
+        } catch (const std::invalid_argument& error) {
+            throw std::invalid_argument(std::string("--") + error.what());
+        }
+        try {
+            io::check_dataset_files(dataset_files, dataset_options, prepared.scene);
+        } catch (const std::invalid_argument& error) {
+            throw std::invalid_argument(std::string("--") + error.what());
+        }
+        dataset_files.add_planes_to(prepared.options.aovs);
     }
     if (!command.camera_out.empty()) {
         // Refused before rendering: a missing folder, a folder in the way.
@@ -115,7 +134,12 @@ int run_render(const RenderCommand& command) {
     stop_if_interrupted();
     io::ImageWriteOptions image_options;
     image_options.png_compression = io::parse_png_compression(command.png_compression);
-    if (prepared.options.aovs.any() && format == io::ImageFormat::exr) {
+    // The dataset files first: the colour image, written last, marks the whole set as done (batch resumes by it).
+    if (dataset_files.any()) {
+        io::write_dataset_files(result.aovs, io::object_first_triangles(prepared.scene), output, dataset_files,
+                                dataset_options);
+    }
+    if (!command.aovs.empty() && format == io::ImageFormat::exr) {
         io::write_exr_with_aovs(result.image, result.aovs, output);
     } else if (command.transparent) {
         io::write_png_with_alpha(result.image, result.aovs.alpha, prepared.scene.image.background, output,
@@ -133,7 +157,11 @@ int run_render(const RenderCommand& command) {
         io::write_text_file(command.stats_json,
                             stats_json(timing, result.stats, prepared.scene, prepared.options));
     }
-    messages.result("wrote " + std::filesystem::absolute(output).lexically_normal().string());
+    std::string written = std::filesystem::absolute(output).lexically_normal().string();
+    for (const std::string& file : io::dataset_file_paths(output, dataset_files)) {
+        written += ", " + std::filesystem::path(file).filename().string();
+    }
+    messages.result("wrote " + written);
     if (!command.camera_out.empty()) {
         io::write_text_file(command.camera_out, io::camera_records_json({io::camera_record(
                                                     prepared.scene, output, command.camera_out)}));

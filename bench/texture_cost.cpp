@@ -1,5 +1,6 @@
-// bench_texture_cost: what a texture map costs. A 1024 x 1024 Phong render
-// (exact mode, two lights) of a ~100k-triangle sphere textured with a
+// bench_texture_cost [phong|gouraud|flat]: what a texture map costs. A
+// 1024 x 1024 render with the shader given (Phong when none; exact mode, two
+// lights) of a ~100k-triangle sphere textured with a
 // 1024 x 1024 image (spherical (s, t), bilinear and nearest), against the same
 // sphere untextured (a version-1 mesh), in interleaved rounds in one process
 // so a change in the machine's load hits every contender alike. Prints one
@@ -33,7 +34,7 @@ std::shared_ptr<const TextureImage> procedural_texture(int size) {
     return image;
 }
 
-Scene sphere_scene(const Mesh& mesh) {
+Scene sphere_scene(const Mesh& mesh, Shader shader) {
     Scene scene;
     scene.mesh = mesh;
     scene.camera.eye = glm::dvec3(0.0, 0.0, 2.6);
@@ -42,13 +43,25 @@ Scene sphere_scene(const Mesh& mesh) {
     scene.material = PhongMaterial{glm::vec3(0.1f), glm::vec3(0.8f), glm::vec3(0.5f), 16.0f};
     scene.lights = {PointLight{glm::dvec3(3.0, 4.0, 5.0), glm::vec3(1.0f)},
                     PointLight{glm::dvec3(-4.0, 1.0, 3.0), glm::vec3(0.4f, 0.5f, 0.7f)}};
-    scene.shader = Shader::phong;
+    scene.shader = shader;
     return scene;
 }
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    Shader shader = Shader::phong;
+    if (argc > 1) {
+        const std::string name = argv[1];
+        if (name == "gouraud") {
+            shader = Shader::gouraud;
+        } else if (name == "flat") {
+            shader = Shader::flat;
+        } else if (name != "phong") {
+            std::fprintf(stderr, "bench_texture_cost: unknown shader '%s' (expected phong, gouraud or flat)\n", argv[1]);
+            return 2;
+        }
+    }
     const Mesh sphere = support::icosphere(71);  // 100,820 triangles
     Mesh textured = sphere;
     constexpr double kPi = 3.14159265358979323846;
@@ -64,7 +77,7 @@ int main() {
     textured.materials = {material};
     textured.face_materials.assign(sphere.triangles.size(), 0);
 
-    const Scene plain = sphere_scene(sphere), with_texture = sphere_scene(textured);
+    const Scene plain = sphere_scene(sphere, shader), with_texture = sphere_scene(textured, shader);
     RenderOptions bilinear = RenderOptions::exact(), nearest = RenderOptions::exact();
     nearest.texture_filter = TextureFilter::nearest;
     Renderer untextured_renderer(bilinear), bilinear_renderer(bilinear), nearest_renderer(nearest);
@@ -74,8 +87,8 @@ int main() {
     const std::vector<double> medians = support::interleaved_medians(
         9, 1, {timed(untextured_renderer, plain), timed(bilinear_renderer, with_texture),
                timed(nearest_renderer, with_texture)});
-    std::printf("| render (1024 x 1024, Phong, exact, %zu triangles, all cores) | median ms | / untextured |\n",
-                sphere.triangles.size());
+    std::printf("| render (1024 x 1024, %s, exact, %zu triangles, all cores) | median ms | / untextured |\n",
+                to_string(shader), sphere.triangles.size());
     std::printf("|---|---|---|\n");
     const char* names[] = {"untextured", "textured, bilinear", "textured, nearest"};
     for (int i = 0; i < 3; ++i) std::printf("| %s | %.1f | %.2f |\n", names[i], medians[i], medians[i] / medians[0]);

@@ -51,7 +51,7 @@ void lay_out_bands(std::size_t blocks, BinningMemory& memory, Bins<Real>& bins) 
 
 template <typename Real>
 void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, int rows, BinningMemory& memory,
-               Bins<Real>& bins) {
+               Bins<Real>& bins, const std::function<void()>& poll) {
     bins.bands = (rows + kBandRows - 1) / kBandRows;
     const std::size_t bands = static_cast<std::size_t>(bins.bands);
     const std::vector<PaintRecord>& sorted = painter.sorted;
@@ -65,6 +65,7 @@ void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, i
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
         std::uint32_t* count = &memory.block_band_count[block * bands];
         for_each_draw_of_block(block, [&](std::size_t band, const DrawTriangle<Real>*) { ++count[band]; });
+        if (poll) poll();
     });
     lay_out_bands(blocks, memory, bins);
     bins.draws.resize(bins.band_start[bands]);
@@ -73,11 +74,13 @@ void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, i
         for_each_draw_of_block(block, [&](std::size_t band, const DrawTriangle<Real>* draw) {
             bins.draws[cursor[band]++] = draw;
         });
+        if (poll) poll();
     });
 }
 
-template void bin_draws<float>(const DrawList<float>&, const PainterOrderMemory&, int, BinningMemory&, Bins<float>&);
+template void bin_draws<float>(const DrawList<float>&, const PainterOrderMemory&, int, BinningMemory&, Bins<float>&,
+                               const std::function<void()>&);
 template void bin_draws<double>(const DrawList<double>&, const PainterOrderMemory&, int, BinningMemory&,
-                                Bins<double>&);
+                                Bins<double>&, const std::function<void()>&);
 
 }  // namespace phongrast::detail

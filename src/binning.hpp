@@ -5,6 +5,7 @@
 #define PHONGRAST_SRC_BINNING_HPP
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "fill_types.hpp"
@@ -33,10 +34,10 @@ struct BinningMemory {
 /// Bins the draws of an image `rows` samples high, triangle by triangle in
 /// painter's order (painter.sorted, whose draws are in `draws`). Counted and scattered in parallel over fixed blocks of that
 /// order, each block writing its own slice of every band: the same bins for
-/// any number of threads.
+/// any number of threads. `poll` (may be empty) is called between blocks, for progress reports.
 template <typename Real>
 void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, int rows, BinningMemory& memory,
-               Bins<Real>& bins);
+               Bins<Real>& bins, const std::function<void()>& poll = nullptr);
 
 }  // namespace phongrast::detail
 

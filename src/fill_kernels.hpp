@@ -214,6 +214,27 @@ void fill_lit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVec
     fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
 }
 
+/// Gouraud on a textured face (contract "Texture maps"): A and S lit at the
+/// corners and interpolated, the pixel T x A + S, with T at the sample's
+/// (s, t) interpolated alike. Set-up put A in the draw's lit[i], S in the
+/// corners' `color` and (s, t) in their `lit`. A face without a texture
+/// carries its whole lit colour in lit[i] and is filled as fill_lit() fills it.
+template <typename Real, bool Perspective>
+void fill_lit_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+                       const FillSetup<Real>& setup) {
+    const KernelTexture& texture = setup.textures[draw.surface];
+    if (texture.texels == nullptr) {
+        fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
+        return;
+    }
+    fill_samples<Real, Perspective>(draw, target, [&](const Real* w) {
+        const Real s = (w[0] * draw.v[0]->lit[0] + w[1] * draw.v[1]->lit[0]) + w[2] * draw.v[2]->lit[0];
+        const Real t = (w[0] * draw.v[0]->lit[1] + w[1] * draw.v[1]->lit[1]) + w[2] * draw.v[2]->lit[1];
+        const Vec3<Real> specular = w[0] * draw.v[0]->color + w[1] * draw.v[1]->color + w[2] * draw.v[2]->color;
+        return texture_at<Real>(texture, s, t) * interpolate_lit(draw, w) + specular;
+    });
+}
+
 /// Flat: the triangle's one colour, written as is. (Interpolating it like
 /// Gouraud would give weights summing to 1 only up to rounding, so the colour
 /// would wander by an ulp across the triangle.)
@@ -377,7 +398,7 @@ FillKernel<Real> pick_phong_vectors_color(const KernelChoice& c) {
 template <typename Real, bool Perspective>
 FillKernel<Real> pick_kernel_for_projection(const KernelChoice& c) {
     if (c.flat) return c.textured ? &fill_flat_textured<Real, Perspective> : &fill_flat<Real, Perspective>;
-    if (!c.phong) return &fill_lit<Real, Perspective>;
+    if (!c.phong) return c.textured ? &fill_lit_textured<Real, Perspective> : &fill_lit<Real, Perspective>;
     if (c.textured) {
         return c.per_sample_vectors ? &fill_phong_general<Real, Perspective, true, true>
                                     : &fill_phong_general<Real, Perspective, false, true>;

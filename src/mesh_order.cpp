@@ -143,7 +143,10 @@ double local_order_misses(const Mesh& mesh) {
     return double(misses) / double(read);
 }
 
-void compute_mesh_order(const Mesh& mesh, MeshOrder& order) {
+void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll) {
+    const auto report = [&poll] {
+        if (poll) poll();
+    };
     const std::size_t triangles = mesh.triangles.size(), vertices = mesh.positions.size();
     // Triangles by the Morton code of their centroid's cell in a 64^3 grid
     // over the mesh's bounding box, in the caller's order within a cell: one
@@ -168,12 +171,14 @@ void compute_mesh_order(const Mesh& mesh, MeshOrder& order) {
             cell[t] = morton_code(q[0], q[1], q[2]);
         }
     });
+    report();
     std::vector<std::uint32_t> start(std::size_t(kCells) * kCells * kCells + 1, 0);
     for (std::uint32_t code : cell) ++start[code + 1];
     for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
     order.triangle_source.resize(triangles);
     for (std::size_t t = 0; t < triangles; ++t) order.triangle_source[start[cell[t]]++] = static_cast<std::uint32_t>(t);
     std::vector<std::uint32_t>().swap(cell);
+    report();
 
     // Vertices numbered by first use in that order; unused ones after them.
     std::vector<std::uint32_t> indices(3 * triangles);
@@ -182,8 +187,10 @@ void compute_mesh_order(const Mesh& mesh, MeshOrder& order) {
         for (int i = 0; i < 3; ++i) indices[3 * k + i] = tri[i];
     }
     order.vertex_target.resize(vertices);
+    report();
     std::size_t used = meshopt_optimizeVertexFetchRemap(order.vertex_target.data(), indices.data(), indices.size(),
                                                         vertices);
+    report();
     for (std::uint32_t& target : order.vertex_target) {
         if (target == ~0u) target = static_cast<std::uint32_t>(used++);
     }
@@ -193,7 +200,10 @@ void compute_mesh_order(const Mesh& mesh, MeshOrder& order) {
 }
 
 const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, bool one_off,
-                                   MeshOrder& order) {
+                                   MeshOrder& order, const std::function<void()>& poll) {
+    const auto report = [&poll] {
+        if (poll) poll();
+    };
     order.reordered = false;  // the id output and painter's ties take the pipeline's indices as they are
     if (!should_reorder(scene, options, one_off)) return scene;
     const Mesh& mesh = scene.mesh;
@@ -206,7 +216,7 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
             order.vertex_target.clear();
             order.vertex_source.clear();
         } else {
-            compute_mesh_order(mesh, order);
+            compute_mesh_order(mesh, order, poll);
         }
         order.positions_data = mesh.positions.data();
         order.triangles_data = mesh.triangles.data();
@@ -219,10 +229,13 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
     order.reordered = true;
     copy_all_but_mesh(scene, order.scene);
     Mesh& out = order.scene.mesh;
+    report();
     gather(mesh.positions, order.vertex_source, out.positions);
     gather(mesh.colors, order.vertex_source, out.colors);
+    report();
     if (needs_computed_normals(scene, options)) {
-        calculate_normals_into(mesh.positions, mesh.triangles, order.normals_scratch, order.normals);
+        calculate_normals_into(mesh.positions, mesh.triangles, order.normals_scratch, order.normals, poll);
+        report();
         gather(order.normals, order.vertex_source, out.normals);
     } else {
         gather(mesh.normals, order.vertex_source, out.normals);
@@ -235,6 +248,7 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
             out.triangles[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
         }
     });
+    report();
     // Contract version 2's per-triangle attributes follow their triangles.
     out.texcoords = mesh.texcoords;
     gather_corner_indices(mesh.texcoord_triangles, order.triangle_source, out.texcoord_triangles);

@@ -28,6 +28,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "normals_scratch.hpp"
@@ -103,12 +104,13 @@ bool should_reorder(const Scene& scene, const RenderOptions& options, bool one_o
 /// when its order is already local (local_order_misses()), else order.scene, `scene` with its mesh permuted (order.triangle_source
 /// then names each internal triangle's original index; otherwise it is
 /// empty). Reuses order's permutation when the mesh looks like the last one.
+/// `poll` (may be empty) is called between steps, for progress reports.
 const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, bool one_off,
-                                   MeshOrder& order);
+                                   MeshOrder& order, const std::function<void()>& poll = nullptr);
 
 /// The permutation alone, for tests and benchmarks: fills order's
 /// triangle_source, vertex_target and vertex_source for `mesh`.
-void compute_mesh_order(const Mesh& mesh, MeshOrder& order);
+void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll = nullptr);
 
 }  // namespace phongrast::detail
 

@@ -198,6 +198,7 @@ void sort_buckets(const Digit& digit, PainterOrderMemory& memory, ProgressMonito
                         digit.base, digit.shift - digit.bits);
             if (tie_rank) order_ties(memory.sorted.data() + bucket_start[b], bucket_start[b + 1] - bucket_start[b], tie_rank);
         }
+        progress.poll();  // no pieces counted here, but a report keeps Ctrl-C prompt (sorting takes a while)
     });
 }
 

@@ -46,7 +46,8 @@ void prepare_textures(const AssembledScene& assembled, const RenderOptions& opti
     }
 }
 
-/// (s, t) of each vertex into its `lit`, which Phong and flat do not otherwise read.
+/// (s, t) of each vertex into its `lit`, which Phong and flat do not otherwise
+/// read and textured Gouraud leaves to (s, t) (its A and S live elsewhere).
 template <typename Real>
 void put_texcoords_in_lit(const AssembledScene& assembled, FrameMemory<Real>& memory) {
     std::vector<Varyings<Real>>& varyings = memory.vertices.varyings;
@@ -55,7 +56,7 @@ void put_texcoords_in_lit(const AssembledScene& assembled, FrameMemory<Real>& me
     }
 }
 
-/// Flat on textured faces lights A and S apart (contract "Texture maps"):
+/// Flat and Gouraud on textured faces light A and S apart (contract "Texture maps"):
 /// each material's rig without its specular coefficient, and with only it.
 template <typename Real>
 void build_part_shaders(const Scene& scene, const AssembledScene& assembled, const View& view,
@@ -102,18 +103,29 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     if (several) build_surface_shaders(scene, *assembled, view, point_shader, memory);
     const bool textured = assembled != nullptr && assembled->textured();
     if (textured) prepare_textures(*assembled, options, memory);
-    // Gouraud's `lit` is its lit colour (and it draws no texture yet).
-    const bool texcoords_in_lit =
-        assembled != nullptr && !assembled->texcoords.empty() && scene.shader != Shader::gouraud;
+    // Untextured Gouraud's `lit` is its lit colour; textured Gouraud keeps
+    // that (A) apart, in the draws, and (s, t) in `lit` too.
+    const bool texcoords_in_lit = assembled != nullptr && !assembled->texcoords.empty() &&
+                                  (scene.shader != Shader::gouraud || textured);
     if (texcoords_in_lit) put_texcoords_in_lit(*assembled, memory);
-    const bool textured_flat = textured && scene.shader == Shader::flat;
-    if (textured_flat) build_part_shaders(scene, *assembled, view, point_shader, memory);
+    // Flat and Gouraud on textured faces light A and S apart.
+    const bool in_parts = textured && scene.shader != Shader::phong;
+    if (in_parts) build_part_shaders(scene, *assembled, view, point_shader, memory);
     FillPlan<Real> fill_plan = plan_fill(scene, options, effects, several ? memory.surface_rigs[0] : memory.rig,
                                          textured ? memory.surface_textures.data() : nullptr);
     if (several) fill_plan.order_free = false;  // one colour per material, not one for all
     const VertexMaterials<Real> vertex_materials{several ? assembled->vertex_surfaces.data() : nullptr,
                                                  several ? memory.surface_shaders.data() : nullptr};
-    if (scene.shader == Shader::gouraud && options.light_vectors == LightVectors::shaded_point) {
+    const ShadingParts<Real> parts{in_parts ? memory.surface_textures.data() : nullptr,
+                                   in_parts ? memory.colour_part_shaders.data() : nullptr,
+                                   in_parts ? memory.specular_part_shaders.data() : nullptr};
+    const bool exact_gouraud = scene.shader == Shader::gouraud && options.light_vectors == LightVectors::shaded_point;
+    if (exact_gouraud && in_parts) {
+        light_vertices_in_parts(point_shader, vertex_materials, parts, memory.vertices.varyings,
+                                memory.vertex_colour_parts, memory.vertex_stage);
+        count_term_evaluations(scene, options, effects, memory.vertices.varyings.size(), LitPoints::outside_the_fill,
+                               stats);
+    } else if (exact_gouraud) {
         light_vertices(point_shader, vertex_materials, memory.vertices.varyings, memory.vertex_stage);
         count_term_evaluations(scene, options, effects, memory.vertices.varyings.size(), LitPoints::outside_the_fill,
                                stats);
@@ -129,9 +141,10 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                  fill_plan.setup,
                                  several ? assembled->triangle_surfaces.data() : nullptr,
                                  several ? memory.surface_shaders.data() : nullptr,
-                                 textured_flat ? memory.surface_textures.data() : nullptr,
-                                 textured_flat ? memory.colour_part_shaders.data() : nullptr,
-                                 textured_flat ? memory.specular_part_shaders.data() : nullptr};
+                                 parts.textures,
+                                 parts.colour_part_shaders,
+                                 parts.specular_part_shaders,
+                                 exact_gouraud && in_parts ? memory.vertex_colour_parts.data() : nullptr};
     set_up_triangles(setup, memory.draws, stats, progress);
     const bool sort = !fill_plan.order_free || out.aov_planes.any();  // depth and id name the last triangle
     // Mesh order hook: a reordered mesh's equal depths are drawn in the caller's triangle order.
@@ -142,7 +155,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, sort, memory.painter,
                   progress, tie_rank);
     if (sort) stats.triangles_sorted += memory.painter.sorted.size();
-    bin_draws(memory.draws, memory.painter, rows, memory.binning, memory.bins);
+    bin_draws(memory.draws, memory.painter, rows, memory.binning, memory.bins, progress.poll_function());
 
     progress.begin_stage(0.4, out.aov_planes.any() ? 0.9 : 1.0, static_cast<std::size_t>(memory.bins.bands));
     fill_bins(scene, options, fill_plan, memory.bins, rows, columns, memory.fill, out.image, stats, progress);

@@ -38,9 +38,11 @@ struct FrameMemory {
     std::vector<LightRig<Real>> surface_rigs;
     std::vector<PointShader<Real>> surface_shaders;
     std::vector<KernelTexture> surface_textures;  ///< a textured scene: per material
-    /// A textured scene drawn flat: per material, rigs and shaders of A (ks = 0) and S (ka = kd = 0).
+    /// A textured scene drawn flat or Gouraud: per material, rigs and shaders of A (ks = 0) and S (ka = kd = 0).
     std::vector<LightRig<Real>> colour_part_rigs, specular_part_rigs;
     std::vector<PointShader<Real>> colour_part_shaders, specular_part_shaders;
+    /// Textured Gouraud with exact vectors: A (or the whole lit colour) per vertex.
+    std::vector<Vec3<Real>> vertex_colour_parts;
 };
 
 /// What one render pass writes: the image, and the extra outputs `aov_planes`

@@ -94,7 +94,9 @@ struct RendererState final : PassRenderer {
             // surfaces are indexed by that order, which the reordering does not permute.
             mesh_order.reordered = false;
             const Scene& drawn =
-                assembled != nullptr ? rendered : scene_in_render_order(rendered, options, one_off, mesh_order);
+                assembled != nullptr ? rendered
+                                    : scene_in_render_order(rendered, options, one_off, mesh_order,
+                                                            monitor.poll_function());
             scene = &drawn;
             render_and_resolve(drawn, options, *this, resolve_images, result);
         });

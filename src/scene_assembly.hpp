@@ -60,8 +60,7 @@ bool needs_assembly(const Scene& scene);
 /// Kept apart from validate_render_request(), which then checks the assembled scene.
 void validate_scene_objects(const Scene& scene);
 
-/// What textured scenes cannot have yet: the Gouraud shader (its T x A + S
-/// is not implemented), or the trilinear filter. Throws
+/// What textured scenes cannot have yet: the trilinear filter. Throws
 /// std::invalid_argument naming the field.
 void validate_textured_request(const AssembledScene& assembled, const Scene& scene, const RenderOptions& options);
 

@@ -147,12 +147,8 @@ void validate_scene_objects(const Scene& scene) {
 
 namespace phongrast::detail {
 
-void validate_textured_request(const AssembledScene& assembled, const Scene& scene, const RenderOptions& options) {
+void validate_textured_request(const AssembledScene& assembled, const Scene&, const RenderOptions& options) {
     if (!assembled.textured()) return;
-    if (scene.shader == Shader::gouraud) {
-        throw std::invalid_argument("shader: gouraud does not draw texture maps yet (phong and flat do); "
-                                    "render this textured scene with phong or flat");
-    }
     if (options.texture_filter == TextureFilter::trilinear) {
         throw std::invalid_argument("texture_filter: trilinear is not implemented yet; use bilinear or nearest");
     }

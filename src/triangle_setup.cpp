@@ -39,7 +39,8 @@ public:
     TriangleSetup(const SetupInput<Real>& input, std::vector<DrawTriangle<Real>>& out,
                   ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors)
         : in_(input), vertices_(input.vertices), out_(out), clip_vertices_(clip_vertices), counts_(counts),
-          vectors_(vectors), same_lit_(same_lit_everywhere()) {}
+          vectors_(vectors), same_lit_(same_lit_everywhere()),
+          in_parts_(input.scene.shader == Shader::gouraud && input.textures != nullptr) {}
 
     // Both paths, whole and clipped, make their pieces with set_up_piece()
     // and are counted and flat-lit here.
@@ -168,6 +169,11 @@ private:
         DrawTriangle<Real> draw;
         int order[3];
         if (!set_up_piece(corner, centroid, draw, outcome, order)) return outcome;
+        if (in_parts_) {
+            set_up_whole_in_parts(tri, centroid, order, draw);
+            out_.push_back(draw);
+            return outcome;
+        }
         // Exact vectors: set_up_piece() copied the `lit` light_vertices() gave each vertex.
         if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid) {
             if (same_lit_) {
@@ -198,16 +204,17 @@ private:
             v.column = s.column;
             v.row = s.row;
         }
+        const bool perspective = perspective_weights(in_.scene, in_.options);
+        if (in_parts_) return set_up_clipped_in_parts(tri, centroid, inside_image, polygon, outcome);
         if (in_.scene.shader == Shader::gouraud) {
             // Before clipping, so that clipped corners interpolate lit colours.
             Varyings<Real>* corners[3] = {&polygon.vertices[0].varyings, &polygon.vertices[1].varyings,
                                           &polygon.vertices[2].varyings};
             counts_.lit_points += light_corners(corners, centroid);
         }
-        const bool perspective = perspective_weights(in_.scene, in_.options);
         const ClipOutcome clipped = clip_to_view(polygon, in_.view, perspective);
         if (clipped != ClipOutcome::kept) return clipped;
-        draw_fan(polygon, centroid, outcome);
+        draw_fan(polygon, centroid, outcome, nullptr);
         if (!inside_image) ++counts_.clipped;
         if (!outcome.drawn && outcome.has_area) {
             outcome.meets_image = meets_image(polygon, in_.view.frame.rows, in_.view.frame.columns);
@@ -226,7 +233,10 @@ private:
         return corner.depth <= kMaxDrawableDepth<Real> || corner.depth < 0.0;
     }
 
-    void draw_fan(const ClipPolygon<Real>& polygon, const Vec3<Real>& centroid, PiecesOutcome& outcome) {
+    /// `colour_parts`: textured Gouraud, the same polygon clipped with each
+    /// corner's A in `color`, which becomes the draws' lit[i]; else null.
+    void draw_fan(const ClipPolygon<Real>& polygon, const Vec3<Real>& centroid, PiecesOutcome& outcome,
+                  const ClipPolygon<Real>* colour_parts) {
         const Varyings<Real>* stored[8] = {};  // the polygon's corners, stored once the first piece is drawn
         for (std::size_t k = 1; k + 1 < polygon.count; ++k) {
             const std::size_t index[3] = {0, k, k + 1};
@@ -243,8 +253,86 @@ private:
                 for (std::size_t i = 0; i < polygon.count; ++i) stored[i] = clip_vertices_.push(polygon.vertices[i].varyings);
             }
             for (int i = 0; i < 3; ++i) draw.v[i] = stored[index[order[i]]];
+            if (colour_parts != nullptr) {
+                for (int i = 0; i < 3; ++i) draw.lit[i] = colour_parts->vertices[index[order[i]]].varyings.color;
+            }
             out_.push_back(draw);
         }
+    }
+
+    // Textured Gouraud (contract "Texture maps": A and S at each vertex, both
+    // interpolated, the pixel T x A + S). The draw's lit[i] is the corner's A;
+    // its varyings carry S in `color` and (s, t) in `lit`. A face without a
+    // texture carries its whole lit colour in lit[i], as untextured Gouraud does.
+
+    /// Whether the triangle being set up draws its material's texture.
+    bool textured_face() const { return in_.textures[surface_].texels != nullptr; }
+
+    void set_up_whole_in_parts(const Triangle& tri, const Vec3<Real>& centroid, const int (&order)[3],
+                               DrawTriangle<Real>& draw) {
+        if (in_.options.light_vectors != LightVectors::triangle_centroid) {
+            // Exact vectors: each vertex was lit once (light_vertices_in_parts), S already in its `color`.
+            for (int i = 0; i < 3; ++i) draw.lit[i] = in_.vertex_colour_parts[tri[order[i]]];
+            return;
+        }
+        Varyings<Real> corners[3] = {*draw.v[0], *draw.v[1], *draw.v[2]};
+        Vec3<Real> colour_parts[3];
+        counts_.lit_points += light_corners_in_parts(corners, centroid, colour_parts);
+        for (int i = 0; i < 3; ++i) draw.lit[i] = colour_parts[i];
+        if (!textured_face()) return;  // the corners' varyings are unchanged: the mesh's serve
+        // S depends on the triangle (its centroid's vectors): the corners are the triangle's own.
+        for (int i = 0; i < 3; ++i) draw.v[i] = clip_vertices_.push(corners[i]);
+    }
+
+    /// The polygon is clipped twice: as it is (S in `color`, (s, t) in `lit`)
+    /// and with A in `color`. Clipping decides from positions, depths and
+    /// sample coordinates alone, which are the same in both, so both give the
+    /// same corners with every attribute interpolated alike.
+    ClipOutcome set_up_clipped_in_parts(const Triangle& tri, const Vec3<Real>& centroid, bool inside_image,
+                                        ClipPolygon<Real>& polygon, PiecesOutcome& outcome) {
+        Vec3<Real> colour_parts[3];
+        if (in_.options.light_vectors == LightVectors::triangle_centroid) {
+            Varyings<Real> corners[3] = {polygon.vertices[0].varyings, polygon.vertices[1].varyings,
+                                         polygon.vertices[2].varyings};
+            counts_.lit_points += light_corners_in_parts(corners, centroid, colour_parts);
+            for (int i = 0; i < 3; ++i) polygon.vertices[i].varyings = corners[i];
+        } else {
+            for (int i = 0; i < 3; ++i) colour_parts[i] = in_.vertex_colour_parts[tri[i]];
+        }
+        ClipPolygon<Real> parts = polygon;
+        for (int i = 0; i < 3; ++i) parts.vertices[i].varyings.color = colour_parts[i];
+        const bool perspective = perspective_weights(in_.scene, in_.options);
+        const ClipOutcome clipped = clip_to_view(polygon, in_.view, perspective);
+        if (clipped != ClipOutcome::kept) return clipped;
+        clip_to_view(parts, in_.view, perspective);  // the same outcome and corners (see above)
+        draw_fan(polygon, centroid, outcome, &parts);
+        if (!inside_image) ++counts_.clipped;
+        if (!outcome.drawn && outcome.has_area) {
+            outcome.meets_image = meets_image(polygon, in_.view.frame.rows, in_.view.frame.columns);
+        }
+        return ClipOutcome::kept;
+    }
+
+    /// Seed-Gouraud's corners lit at the centroid's vectors: on a textured
+    /// face A into `colour_parts` and S into the corner's `color`; else the
+    /// whole lit colour into `colour_parts`, as light_corners() computes it.
+    std::uint64_t light_corners_in_parts(Varyings<Real> (&corners)[3], const Vec3<Real>& centroid,
+                                         Vec3<Real> (&colour_parts)[3]) const {
+        if (!textured_face()) {
+            const PointShader<Real>& lighting = shader();
+            lighting.compute_vectors(vectors_, centroid);
+            for (int i = 0; i < 3; ++i) colour_parts[i] = lighting.shade_prepared(vectors_, corners[i].normal, corners[i].color);
+            return 3;
+        }
+        const PointShader<Real>& colour_part = in_.colour_part_shaders[surface_];
+        const PointShader<Real>& specular_part = in_.specular_part_shaders[surface_];
+        colour_part.compute_vectors(vectors_, centroid);
+        for (int i = 0; i < 3; ++i) {
+            Varyings<Real>& v = corners[i];
+            colour_parts[i] = colour_part.shade_prepared(vectors_, v.normal, v.color);
+            v.color = specular_part.shade_prepared(vectors_, v.normal, v.color);
+        }
+        return 3;
     }
 
     /// The colour every point lights to, when that does not depend on the
@@ -299,6 +387,9 @@ private:
     SetupCounts& counts_;
     LightVectorsAt<Real>& vectors_;
     const std::optional<Vec3<Real>> same_lit_;  ///< same_lit_everywhere()
+    /// Textured Gouraud: every draw's lit[i] is its corner's A (or whole lit
+    /// colour on a face without texture), S and (s, t) are in the corners' varyings.
+    const bool in_parts_;
 };
 
 /// Records where the draws of the triangle just set up are, and its painter's-order key.

@@ -117,13 +117,17 @@ struct SetupInput {
     /// per material (same effects, its own rig). Null: `shader` for every triangle.
     const std::uint32_t* triangle_surfaces = nullptr;
     const PointShader<Real>* surface_shaders = nullptr;
-    /// A textured scene drawn flat: per material, its texture (null
+    /// A textured scene drawn flat or Gouraud: per material, its texture (null
     /// otherwise), and the shaders of the colour-carrying part A (ks = 0) and
-    /// of the specular part S (ka = kd = 0) that a textured face's draw
-    /// carries in lit[0] and lit[1].
+    /// of the specular part S (ka = kd = 0). A textured face's flat draw
+    /// carries A in lit[0] and S in lit[1]; its Gouraud draw carries A at each
+    /// corner in lit[i] and S in its corners' `color` ((s, t) in their `lit`).
     const KernelTexture* textures = nullptr;
     const PointShader<Real>* colour_part_shaders = nullptr;
     const PointShader<Real>* specular_part_shaders = nullptr;
+    /// Textured Gouraud with exact vectors: per vertex, A (or the whole lit
+    /// colour on a face without texture) from light_vertices_in_parts().
+    const Vec3<Real>* vertex_colour_parts = nullptr;
 };
 
 /// Sets up every triangle of the mesh, in mesh order, into `draws` and adds

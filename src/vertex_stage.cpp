@@ -1,5 +1,6 @@
 #include "vertex_stage.hpp"
 
+#include "fill_types.hpp"
 #include "normalize_lanes.hpp"
 
 #include <algorithm>
@@ -204,13 +205,42 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
     });
 }
 
+template <typename Real>
+void light_vertices_in_parts(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
+                             const ShadingParts<Real>& parts, std::vector<Varyings<Real>>& varyings,
+                             std::vector<Vec3<Real>>& colour_parts, VertexStageMemory<Real>& memory) {
+    colour_parts.resize(varyings.size());
+    const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
+    if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
+        LightVectorsAt<Real>& vectors = memory.block_vectors[block];
+        const std::size_t end = std::min(varyings.size(), (block + 1) * kLightingBlock);
+        for (std::size_t i = block * kLightingBlock; i != end; ++i) {
+            Varyings<Real>& v = varyings[i];
+            const std::uint32_t surface = materials.vertex_surfaces != nullptr ? materials.vertex_surfaces[i] : 0;
+            if (parts.textures[surface].texels == nullptr) {
+                colour_parts[i] = materials.shader_of(shader, i)(vectors, v.position, v.normal, v.color);
+                continue;
+            }
+            // Both parts from the same vectors (the part rigs have the material's lights).
+            const PointShader<Real>& colour_part = parts.colour_part_shaders[surface];
+            colour_part.compute_vectors(vectors, v.position);
+            colour_parts[i] = colour_part.shade_prepared(vectors, v.normal, v.color);
+            v.color = parts.specular_part_shaders[surface].shade_prepared(vectors, v.normal, v.color);
+        }
+    });
+}
+
 #define PHONGRAST_INSTANTIATE_VERTEX_STAGE(Real)                                                               \
     template void transform_vertices<Real>(const Mesh&, const View&, bool, VertexStageMemory<Real>&,            \
                                            TransformedVertices<Real>&, ProgressMonitor&);                       \
     template void build_light_rig<Real>(const Scene&, const CameraFrame&, LightRig<Real>&);                     \
     template void build_light_rig<Real>(const Scene&, const PhongMaterial&, const CameraFrame&, LightRig<Real>&); \
     template void light_vertices<Real>(const PointShader<Real>&, const VertexMaterials<Real>&,                  \
-                                       std::vector<Varyings<Real>>&, VertexStageMemory<Real>&);
+                                       std::vector<Varyings<Real>>&, VertexStageMemory<Real>&);              \
+    template void light_vertices_in_parts<Real>(const PointShader<Real>&, const VertexMaterials<Real>&,         \
+                                                const ShadingParts<Real>&, std::vector<Varyings<Real>>&,        \
+                                                std::vector<Vec3<Real>>&, VertexStageMemory<Real>&);
 PHONGRAST_INSTANTIATE_VERTEX_STAGE(float)
 PHONGRAST_INSTANTIATE_VERTEX_STAGE(double)
 #undef PHONGRAST_INSTANTIATE_VERTEX_STAGE

@@ -16,6 +16,8 @@
 
 namespace phongrast::detail {
 
+struct KernelTexture;  // fill_types.hpp
+
 /// Where a vertex lands: what set-up, clipping and painter's order read of
 /// it, side by side, so that a triangle whose vertices lie far apart in the
 /// arrays costs one cache line per vertex, not three.
@@ -84,6 +86,26 @@ struct VertexMaterials {
 template <typename Real>
 void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
                     std::vector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory);
+
+/// Textured Gouraud's parts (contract "Texture maps"): per material, whether
+/// its faces draw a texture, and the shaders of the colour-carrying part A
+/// (ks = 0) and of the specular part S (ka = kd = 0).
+template <typename Real>
+struct ShadingParts {
+    const KernelTexture* textures = nullptr;  ///< per material; no texels: drawn untextured
+    const PointShader<Real>* colour_part_shaders = nullptr;
+    const PointShader<Real>* specular_part_shaders = nullptr;
+};
+
+/// light_vertices() for a textured Gouraud scene with exact vectors: a vertex
+/// of a textured material gets A into `colour_parts` and S into its `color`
+/// (the surface colour is read by nothing after lighting); any other vertex
+/// its whole lit colour into `colour_parts`. `lit` keeps (s, t). A separate
+/// array, so that untextured renders carry nothing more per vertex.
+template <typename Real>
+void light_vertices_in_parts(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
+                             const ShadingParts<Real>& parts, std::vector<Varyings<Real>>& varyings,
+                             std::vector<Vec3<Real>>& colour_parts, VertexStageMemory<Real>& memory);
 
 }  // namespace phongrast::detail
 

@@ -180,7 +180,7 @@ TEST_CASE("negative coefficients, ambient and light intensities are legal: the f
     CHECK_THROWS_WITH(render(bad), Contains("lights[0]"));
 }
 
-TEST_CASE("user normals: NaN is an error; zero takes the computed normal; any length is normalised") {
+TEST_CASE("user normals: NaN is an error, zero takes the computed normal, any length is normalised") {
     Scene scene = triangle_scene();
     const Image computed = render(scene).image;  // computed normals: (0, 0, 1) at every vertex
 

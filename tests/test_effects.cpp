@@ -167,7 +167,7 @@ TEST_CASE("a light of zero intensity costs no evaluation") {
     CHECK(one.stats.diffuse_evaluations == one.stats.samples_shaded);  // one light, not two
 }
 
-TEST_CASE("Gouraud lights each vertex once; flat lights each triangle once") {
+TEST_CASE("Gouraud lights each vertex once, flat lights each triangle once") {
     Scene scene = sphere_scene();
     scene.lighting = Lighting::only_diffuse();
     scene.shader = Shader::gouraud;

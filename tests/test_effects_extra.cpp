@@ -220,7 +220,7 @@ TEST_CASE("every zero that makes a term vanish also removes its evaluations, in 
     }
 }
 
-TEST_CASE("Phong term counts are one per sample per active light; the general kernel counts every light") {
+TEST_CASE("Phong term counts are one per sample per active light, the general kernel counts every light") {
     Scene scene = coloured_sphere_scene();
     scene.shader = Shader::phong;
     scene.lights.push_back({{0, -4, 2}, glm::vec3(0.0f)});  // dark: 2 active of 3
@@ -332,7 +332,7 @@ TEST_CASE("a two-sided sheet encloses nothing and is never culled") {
     CHECK(s.triangles_culled == 0);
 }
 
-TEST_CASE("two closed parts with the same orientation are culled; the changed pixels follow the depth buffer") {
+TEST_CASE("two closed parts with the same orientation are culled, the changed pixels follow the depth buffer") {
     const Mesh ball = test_meshes::uv_sphere(12, 24, 0.5);
     Scene scene = coloured_sphere_scene();
     scene.mesh = Mesh{};

@@ -195,7 +195,7 @@ TEST_CASE("glTF: materials per primitive, texCoord set with v flipped, samplers,
     CHECK(again.mesh.materials[0].texture->image.get() == painted.texture->image.get());
 }
 
-TEST_CASE("glTF images from a file beside it (URI-encoded) and from a data: URI; a missing one warns") {
+TEST_CASE("glTF images from a file beside it (URI-encoded) and from a data: URI, a missing one warns") {
     TemporaryFolder folder;
     folder.write("tex file.png", two_texels(10, 20, 30, 40, 50, 60));
     GltfBuilder builder;

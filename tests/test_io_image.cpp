@@ -2,6 +2,7 @@
 // replacement), the labelled sheet, and automatic framing.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -91,6 +92,24 @@ TEST_CASE("the sheet lays cells out in a grid and draws dark label text") {
     }
     CHECK(blue == 8u * 40u * 60u);  // every cell pixel, untouched
     CHECK(dark_text > 50);          // the labels were drawn (the font was found)
+}
+
+TEST_CASE("sheet labels: text wider than its cell is clipped, broken UTF-8 is drawn as replacement glyphs") {
+    const std::string long_label(400, 'W');
+    const std::string broken_utf8 = "a\xC3 \xE2\x82 \xFF\xF0\x9F\x98\x80";  // cut sequences, a byte never valid, one emoji
+    std::vector<io::SheetCell> cells{{Image(20, 20, glm::vec3(1.0f)), long_label},
+                                     {Image(20, 20, glm::vec3(1.0f)), broken_utf8},
+                                     {Image(20, 20, glm::vec3(1.0f)), "\xC3\xA9t\xC3\xA9"}};
+    Image sheet;
+    REQUIRE_NOTHROW(sheet = io::compose_sheet(cells, 3));  // ASan build: no write outside the sheet
+    std::size_t dark_in_last_column = 0;
+    for (int row = 0; row < sheet.rows; ++row) dark_in_last_column += sheet.at(row, sheet.columns - 1).x < 0.5f;
+    CHECK(dark_in_last_column > 0);  // the W's reach the right edge, and stop there
+    for (const glm::vec3& p : sheet.pixels) {
+        REQUIRE(std::isfinite(p.x));
+        REQUIRE(p.x >= 0.0f);
+        REQUIRE(p.x <= 1.0f);
+    }
 }
 
 TEST_CASE("automatic framing: every vertex inside the image with a margin") {

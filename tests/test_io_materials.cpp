@@ -35,7 +35,7 @@ const char* const quad_positions = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
 }  // namespace
 
-TEST_CASE("each face takes the material of the last usemtl before it; faces before any have none") {
+TEST_CASE("each face takes the material of the last usemtl before it, faces before any have none") {
     TemporaryFolder folder;
     folder.write("two.mtl",
                  "# two materials, each stating some fields\n"

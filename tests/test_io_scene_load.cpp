@@ -238,7 +238,7 @@ TEST_CASE("bad inputs name the scene file, the object and what was expected") {
     CHECK_THROWS_AS(io::load_scene(folder.file("no_such.json")), io::FileError);
 }
 
-TEST_CASE("frame_scene frames every object in world space; on one mesh it is frame_mesh") {
+TEST_CASE("frame_scene frames every object in world space, on one mesh it is frame_mesh") {
     TemporaryFolder folder;
     folder.write("tri.obj", triangle_obj);
     const std::string path = folder.write(

@@ -42,7 +42,7 @@ TEST_CASE("no names, or empty ones, give the exact preset's defaults") {
     }
 }
 
-TEST_CASE("depth-buffer and depth_buffer are one name; keys may be spelled as flags") {
+TEST_CASE("depth-buffer and depth_buffer are one name, keys may be spelled as flags") {
     CHECK(options_from_names({{"visibility", "depth_buffer"}}).visibility == Visibility::depth_buffer);
     CHECK(options_from_names({{"--visibility", "depth-buffer"}}).visibility == Visibility::depth_buffer);
     CHECK(options_from_names({{"sample-pattern", "rotated"}}).sample_pattern == SamplePattern::rotated_grid);

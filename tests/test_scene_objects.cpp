@@ -68,7 +68,7 @@ const Shader kShaders[] = {Shader::flat, Shader::gouraud, Shader::phong};
 
 }  // namespace
 
-TEST_CASE("a version-1 scene is not assembled; one that uses a version-2 field is") {
+TEST_CASE("a version-1 scene is not assembled, one that uses a version-2 field is") {
     Scene scene = lit_scene(Shader::phong);
     scene.mesh = coloured_sphere();
     CHECK_FALSE(detail::needs_assembly(scene));

@@ -44,7 +44,7 @@ TEST_CASE("Gouraud interpolates the lit corners with screen-space weights at pix
     CHECK(painted.count({3, 5}) == 0);
 }
 
-TEST_CASE("either winding paints the same pixels with the same colours; Phong lights each pixel") {
+TEST_CASE("either winding paints the same pixels with the same colours, Phong lights each pixel") {
     std::array<SeedCorner, 3> corners = {SeedCorner{{1.3, 0.7}, {0, 0, 1}, {1, 0, 0}},
                                          SeedCorner{{9.6, 2.2}, {0, 1, 1}, {0, 1, 0}},
                                          SeedCorner{{3.1, 7.9}, {1, 0, 1}, {0, 0, 1}}};

@@ -96,7 +96,7 @@ TEST_CASE("a mesh without shared positions gets the same normals by position as 
     CHECK(with_normals(torus, by_position()).normals == phongrast::calculate_normals(torus));
 }
 
-TEST_CASE("a cube with a 30-degree crease keeps its flat faces; without a crease its corners are rounded") {
+TEST_CASE("a cube with a 30-degree crease keeps its flat faces, without a crease its corners are rounded") {
     Mesh cube = test_meshes::unit_cube();
     cube.colors.resize(cube.positions.size());
     for (std::size_t v = 0; v < cube.colors.size(); ++v) cube.colors[v] = glm::vec3(float(v) / 8.0f, 0.5f, 1.0f);

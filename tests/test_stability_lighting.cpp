@@ -74,7 +74,7 @@ TEST_CASE("two-sided sheet: cancelling vertex normals fall back to a face normal
     }
 }
 
-TEST_CASE("a vertex shared by opposite faces takes the larger face's normal; the normal passing through zero gives no NaN") {
+TEST_CASE("a vertex shared by opposite faces takes the larger face's normal, the normal passing through zero gives no NaN") {
     // Triangle A faces the eye; triangle B, twice as large, faces away; they share vertex 0.
     Scene scene = lit_scene(Shader::phong);
     Mesh& mesh = scene.mesh;
@@ -97,7 +97,7 @@ TEST_CASE("a vertex shared by opposite faces takes the larger face's normal; the
     }
 }
 
-TEST_CASE("opposite vertex normals: the interpolated normal passes through zero; each pixel is lit or ambient, never NaN") {
+TEST_CASE("opposite vertex normals: the interpolated normal passes through zero, each pixel is lit or ambient, never NaN") {
     Scene scene = lit_scene(Shader::phong);
     scene.lighting = parse_lighting("ambient+diffuse");
     add_triangle(scene.mesh, at_pixel(scene, 4, 60, kDepth), at_pixel(scene, 60, 60, kDepth),
@@ -231,7 +231,7 @@ TEST_CASE("a light at the eye: L = V, brightest where the surface faces the eye,
     }
 }
 
-TEST_CASE("the eye on the surface (on a vertex of a sphere): finite; triangles through the eye are edge-on") {
+TEST_CASE("the eye on the surface (on a vertex of a sphere): finite, triangles through the eye are edge-on") {
     Scene scene = lit_scene(Shader::gouraud);
     scene.mesh = test_meshes::uv_sphere(12, 24, 1.0);
     scene.camera.eye = scene.mesh.positions[30];  // a vertex on the surface
@@ -251,7 +251,7 @@ TEST_CASE("the eye on the surface (on a vertex of a sphere): finite; triangles t
     }
 }
 
-TEST_CASE("grazing light: double follows the contract at N.L = +1e-7 (tiny diffuse, specular on); float treats it as 0; -1e-7 gives nothing") {
+TEST_CASE("grazing light: double follows the contract at N.L = +1e-7 (tiny diffuse, specular on), float treats it as 0, -1e-7 gives nothing") {
     // N.L within grazing_threshold() (64 epsilons: 7.6e-6 in float, 1.4e-14 in
     // double) of zero counts as zero: in float, 1e-7 is within rounding of zero.
     PhongMaterial material;

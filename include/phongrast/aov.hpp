@@ -61,7 +61,7 @@ struct AovPlanes {
     /// surface the depth and id come from, interpolated as the shading
     /// interpolates them (perspective-correct in exact mode). Zero on the
     /// background, on faces without texture coordinates, and with the Gouraud
-    /// shader (not yet carried there).
+    /// shader in a scene that draws no texture (its vertices carry no (s, t) then).
     std::vector<glm::vec2> uv;
 };
 

@@ -1,5 +1,5 @@
 // phongrast_openimageio.so: the only code that links OpenImageIO, loaded by
-// openimageio_loader.cpp when an image format or the sheet's text needs it.
+// openimageio_loader.cpp when an image format needs it.
 #include "openimageio_module.hpp"
 
 #include <algorithm>
@@ -9,7 +9,6 @@
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 namespace {
@@ -50,23 +49,8 @@ int read_rgb(const char* path, int* rows, int* columns, float** rgb, char* error
 
 void free_pixels(float* rgb) { std::free(rgb); }
 
-int draw_text(float* rgb, int rows, int columns, int x, int y, const char* text, int font_size, const char* font,
-              const float* colour, char* error, std::size_t error_size) {
-    try {
-        // ImageBuf wraps the caller's pixels without copying.
-        OIIO::ImageBuf image(OIIO::ImageSpec(columns, rows, 3, OIIO::TypeDesc::FLOAT), rgb);
-        if (!OIIO::ImageBufAlgo::render_text(image, x, y, text, font_size, font, OIIO::cspan<float>(colour, 3))) {
-            return copy_error(image.geterror(), error, error_size), 1;
-        }
-        return 0;
-    } catch (const std::exception& failure) {
-        copy_error(failure.what(), error, error_size);
-        return 1;
-    }
-}
-
 const PhongrastOpenImageIoModule the_module = {phongrast::io::detail::kPhongrastOpenImageIoModuleVersion, read_rgb,
-                                               free_pixels, draw_text};
+                                               free_pixels};
 
 }  // namespace
 

@@ -6,7 +6,8 @@
 // DCMTK...) whose loading and initialisers take about 175 ms; linked into the
 // command or the Python module, every process paid it at start-up. Only the
 // uses that need OpenImageIO itself go through here: reading image formats
-// phongrast does not read with its own libraries, and the sheet's labels.
+// phongrast does not read with its own libraries (the sheet's labels use
+// FreeType: text_drawing.hpp).
 #ifndef PHONGRAST_SRC_IO_OPENIMAGEIO_MODULE_HPP
 #define PHONGRAST_SRC_IO_OPENIMAGEIO_MODULE_HPP
 
@@ -23,10 +24,6 @@ struct PhongrastOpenImageIoModule {
     /// (release with free_pixels); otherwise the message in `error`.
     int (*read_rgb)(const char* path, int* rows, int* columns, float** rgb, char* error, std::size_t error_size);
     void (*free_pixels)(float* rgb);
-    /// Draws `text` into a float RGB image in place (OpenImageIO's
-    /// render_text: baseline at y, left edge at x). 0 on success.
-    int (*draw_text)(float* rgb, int rows, int columns, int x, int y, const char* text, int font_size,
-                     const char* font, const float* colour, char* error, std::size_t error_size);
 };
 
 /// The one symbol the module exports.
@@ -35,7 +32,7 @@ const PhongrastOpenImageIoModule* phongrast_openimageio_module(void);
 
 namespace phongrast::io::detail {
 
-constexpr int kPhongrastOpenImageIoModuleVersion = 1;
+constexpr int kPhongrastOpenImageIoModuleVersion = 2;  // 2: draw_text moved to FreeType
 constexpr const char* kOpenImageIoModuleFile = "phongrast_openimageio.so";
 
 /// The module, loaded on the first call (thread-safe). Searched for, in order:

@@ -4,14 +4,20 @@
 #include <stdexcept>
 #include <string>
 
-#include "openimageio_module.hpp"
+#include "text_drawing.hpp"
 
 namespace phongrast::io {
 namespace {
 
-// OpenImageIO's own default (DroidSans) is not packaged in Debian; DejaVuSans
-// comes with fonts-dejavu-core (cmake/debian-packages.txt).
-constexpr const char* label_font = "DejaVuSans";
+// fonts-dejavu-core (cmake/debian-packages.txt) provides it.
+constexpr const char* label_font_family = "DejaVu Sans";
+constexpr const char* label_font_package = "fonts-dejavu-core";
+
+// Found once per process: fontconfig reads its configuration and caches on each lookup.
+const std::string& label_font_file() {
+    static const std::string file = detail::font_file_for(label_font_family, label_font_package);
+    return file;
+}
 
 }  // namespace
 
@@ -34,14 +40,8 @@ Image compose_sheet(const std::vector<SheetCell>& cells, int columns) {
     const int sheet_columns = gap + grid_columns * (cell_columns + gap);
     const int sheet_rows = gap + grid_rows * (label_height + cell_rows + gap);
 
-    // White, then each cell copied below its label strip and its label drawn
-    // by OpenImageIO (loaded now: the text needs its font rendering).
+    // White, then each cell copied below its label strip and its label drawn.
     Image sheet(sheet_rows, sheet_columns, glm::vec3(1.0f));
-    const bool any_label =
-        std::any_of(cells.begin(), cells.end(), [](const SheetCell& cell) { return !cell.label.empty(); });
-    const PhongrastOpenImageIoModule* module =
-        any_label ? &detail::openimageio_module("drawing the sheet's labels") : nullptr;
-    const float black[3] = {0.0f, 0.0f, 0.0f};
     for (std::size_t i = 0; i < cells.size(); ++i) {
         const int grid_x = static_cast<int>(i) % grid_columns;
         const int grid_y = static_cast<int>(i) / grid_columns;
@@ -52,11 +52,11 @@ Image compose_sheet(const std::vector<SheetCell>& cells, int columns) {
             std::copy(from, from + cell_columns, &sheet.at(top + label_height + row, left));
         }
         if (cells[i].label.empty()) continue;
-        char error[1024] = "";
-        if (module->draw_text(&sheet.pixels[0].x, sheet_rows, sheet_columns, left + 2, top + font_size + 2,
-                              cells[i].label.c_str(), font_size, label_font, black, error, sizeof error) != 0) {
-            throw std::runtime_error("compose_sheet: cannot draw the label '" + cells[i].label + "' with font " +
-                                     label_font + " (Debian package fonts-dejavu-core): " + error);
+        try {
+            detail::draw_text(sheet, left + 2, top + font_size + 2, cells[i].label, font_size, label_font_file(),
+                              glm::vec3(0.0f));
+        } catch (const std::runtime_error& failure) {
+            throw std::runtime_error("compose_sheet: cannot draw the label '" + cells[i].label + "': " + failure.what());
         }
     }
     return sheet;

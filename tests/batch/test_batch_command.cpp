@@ -70,6 +70,43 @@ TEST_CASE("batch writes each image byte for byte as `phongrast render` does") {
     CHECK(files.at("t/1.png") != files.at("t/0.png"));
 }
 
+TEST_CASE("batch writes dataset files (aov_files) as `render --aov-files` does, a missing one makes the job run again") {
+    TemporaryFolder folder;
+    generate_mesh(folder, "knot.obj", 60, 8);
+    folder.write("jobs.jsonl",
+                 "{\"mesh\": \"knot.obj\", \"size\": \"40x30\", \"samples\": 2, \"aov_files\": \"mask,id,depth16\", "
+                 "\"depth_scale\": 0.01}\n"
+                 "{\"mesh\": \"knot.obj\", \"layout\": \"sphere\", \"views\": 3, \"size\": \"24x24\", \"output\": \"s/{view}.png\"}\n");
+    const Run batch = run_phongrast(folder, "batch jobs.jsonl -o out --aov-files normal");
+    INFO(batch.err);
+    REQUIRE(batch.status == 0);
+    REQUIRE(run_phongrast(folder, "render knot.obj --size 40x30 --samples 2 --aov-files mask,id,depth16 --depth-scale 0.01 "
+                                  "-q -o single.png").status == 0);
+    const auto files = files_under(folder.file("out"));
+    const auto alone = files_under(folder.file(""));
+    for (const char* name : {"knot.png", "knot.mask.png", "knot.id.png", "knot.depth.png"}) {
+        INFO(name);
+        const std::string single = std::string("single") + (std::string(name).substr(4));
+        REQUIRE(files.count(name) == 1);
+        CHECK(files.at(name) == alone.at(single));
+    }
+    CHECK(files.count("knot.normal.png") == 0);  // the line's own aov_files win over the command line's
+    for (const char* name : {"s/0.normal.png", "s/1.normal.png", "s/2.normal.png", "s/2.png"}) CHECK(files.count(name) == 1);
+    // A view whose dataset file is missing is not done: the job runs again.
+    fs::remove(folder.file("out/knot.id.png"));
+    const Run again = run_phongrast(folder, "batch jobs.jsonl -o out --aov-files normal");
+    CHECK_THAT(again.out, Catch::Contains("2 jobs: 1 rendered, 1 already done"));
+    CHECK(files_under(folder.file("out")).at("knot.id.png") == alone.at("single.id.png"));
+    // Names that would collide, and bad values, stop the batch before it starts.
+    folder.write("bad.jsonl", "{\"mesh\": \"knot.obj\", \"aov_files\": \"mask,hue\"}\n");
+    CHECK_THAT(run_phongrast(folder, "batch bad.jsonl -o out2").err, Catch::Contains("bad.jsonl:1: /aov_files: aov-files: unknown 'hue'"));
+    folder.write("clash.jsonl", "{\"mesh\": \"knot.obj\", \"aov_files\": \"mask\"}\n{\"mesh\": \"knot.obj\", \"output\": \"knot.mask.png\"}\n");
+    const Run clash = run_phongrast(folder, "batch clash.jsonl -o out2");
+    CHECK(clash.status == 2);
+    CHECK_THAT(clash.err, Catch::Contains("clash.jsonl:2: /output: 'knot.mask.png' is also written by line 1"));
+    CHECK_FALSE(fs::exists(folder.file("out2")));
+}
+
 TEST_CASE("a malformed manifest line stops the batch before anything is written, exit status 2") {
     TemporaryFolder folder;
     folder.write("jobs.jsonl", "{\"mesh\": \"a.obj\"}\n{\"mesh\": \"b.obj\", \"views\": \"four\"}\n");
@@ -87,7 +124,7 @@ TEST_CASE("a malformed manifest line stops the batch before anything is written,
     CHECK_THAT(bad_shard.err, Catch::Contains("--shard: expected I/N"));
 }
 
-TEST_CASE("a bad mesh fails its own job only; the log, stderr and --status name it; exit status 1") {
+TEST_CASE("a bad mesh fails its own job only, the log, stderr and --status name it, exit status 1") {
     TemporaryFolder folder;
     generate_mesh(folder, "knot.obj", 40, 6);
     folder.write("broken.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n");

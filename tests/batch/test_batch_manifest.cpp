@@ -45,12 +45,56 @@ TEST_CASE("a manifest holds scene files, inline scenes and turntables, paths rel
     CHECK(turntable.kind == JobKind::mesh);
     CHECK(turntable.path == "/data/meshes/chair.obj");
     CHECK(turntable.views == 12);
-    CHECK(turntable.elevation == 20.0);
+    CHECK(turntable.layout == ViewLayout::turntable);
+    CHECK(turntable.elevations == std::vector<double>{20.0});
     CHECK(turntable.settings.size == "64x32");
     CHECK(turntable.settings.samples == 2);
     REQUIRE(turntable.outputs.size() == 12);
     CHECK(turntable.outputs.front() == "chair-00.png");
     CHECK(turntable.outputs.back() == "chair-11.png");
+}
+
+TEST_CASE("view layouts: elevation rings multiply the views, a sphere or hemisphere has as many as it says") {
+    const Manifest manifest = parse(
+        "{\"mesh\": \"a.obj\", \"views\": 8, \"elevations\": [-15, 0, 30.5]}\n"
+        "{\"mesh\": \"b.obj\", \"layout\": \"sphere\", \"views\": 50}\n"
+        "{\"mesh\": \"c.obj\", \"layout\": \"hemisphere\", \"views\": 7}\n"
+        "{\"mesh\": \"d.obj\", \"layout\": \"turntable\"}\n");
+    REQUIRE(manifest.jobs.size() == 4);
+    CHECK(manifest.jobs[0].layout == ViewLayout::turntable);
+    CHECK(manifest.jobs[0].views == 24);
+    CHECK(manifest.jobs[0].elevations == std::vector<double>{-15.0, 0.0, 30.5});
+    CHECK(manifest.jobs[0].outputs.size() == 24);
+    CHECK(manifest.jobs[0].outputs.back() == "a-23.png");
+    CHECK(manifest.jobs[1].layout == ViewLayout::sphere);
+    CHECK(manifest.jobs[1].views == 50);
+    CHECK(manifest.jobs[1].outputs.back() == "b-49.png");
+    CHECK(manifest.jobs[2].layout == ViewLayout::hemisphere);
+    CHECK(manifest.jobs[2].views == 7);
+    CHECK(manifest.jobs[3].views == 1);
+    CHECK(manifest.jobs[3].elevations == std::vector<double>{0.0});
+    CHECK(manifest.jobs[3].outputs == std::vector<std::string>{"d.png"});
+}
+
+TEST_CASE("bad view layouts name the field") {
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"layout\": \"cube\"}"),
+               Catch::StartsWith("m.jsonl:1: /layout: expected \"turntable\", \"sphere\" or \"hemisphere\", got \"cube\""));
+    CHECK_THAT(error_of("{\"scene\": \"s.json\", \"layout\": \"sphere\"}"), Catch::StartsWith("m.jsonl:1: /layout: only a \"mesh\""));
+    CHECK_THAT(error_of("{\"scene\": \"s.json\", \"elevations\": [1]}"), Catch::StartsWith("m.jsonl:1: /elevations: only a \"mesh\""));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"layout\": \"sphere\", \"elevation\": 10}"),
+               Catch::Contains("/elevation: a sphere layout chooses its own elevations"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"layout\": \"hemisphere\", \"elevations\": [10]}"),
+               Catch::Contains("/elevations: a hemisphere layout chooses its own elevations"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"elevation\": 10, \"elevations\": [10]}"),
+               Catch::Contains("/elevations: both \"elevation\" and \"elevations\""));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"elevations\": []}"), Catch::Contains("/elevations: expected a non-empty array"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"elevations\": 10}"), Catch::Contains("/elevations: expected a non-empty array"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"elevations\": [0, 90]}"),
+               Catch::Contains("/elevations/1: expected degrees between -90 and 90 (exclusive), got 90"));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"elevations\": [0, \"up\"]}"),
+               Catch::Contains("/elevations/1: expected degrees between -90 and 90 (exclusive), got the string \"up\""));
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"views\": 60000, \"elevations\": [0, 10]}"),
+               Catch::Contains("/elevations: 60000 views x 2 rings = 120000 images; at most 100000 per job"));
 }
 
 TEST_CASE("command-line settings fill what a line leaves out, and a line's own win") {

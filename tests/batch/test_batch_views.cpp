@@ -3,6 +3,9 @@
 // axis, and every vertex stays in the picture in every view.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
 #include "batch_views.hpp"
@@ -71,6 +74,101 @@ TEST_CASE("turntable views circle the look-at point with the lights, every verte
     // A quarter turn looks at the box's end: the eye moved from +z to +x.
     CHECK(scenes.cameras[1].eye.x - centre.x == Approx(distance * std::cos(std::acos(-1.0) / 6.0)));
     CHECK(scenes.cameras[1].eye.z - centre.z == Approx(0.0).margin(1e-9));
+}
+
+namespace {
+
+/// Every vertex of `framed`'s mesh projects inside the image in every view.
+void check_every_vertex_inside(const Scene& framed, const JobScenes& scenes) {
+    for (std::size_t view = 0; view < scenes.cameras.size(); ++view) {
+        INFO("view " << view);
+        const CameraFrame frame = make_camera_frame(scenes.cameras[view], framed.image.rows, framed.image.columns);
+        for (const glm::dvec3& vertex : framed.mesh.positions) {
+            const ProjectedPoint point = frame.project(vertex);
+            CHECK(point.depth > 0.0);
+            CHECK(point.column > 0.0);
+            CHECK(point.column < framed.image.columns);
+            CHECK(point.row > 0.0);
+            CHECK(point.row < framed.image.rows);
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("a sphere layout spreads its views evenly over every direction, deterministically") {
+    const Scene framed = io::frame_mesh(long_box(), 48, 64);
+    const glm::dvec3 centre = framed.camera.lookat;
+    const double distance = glm::length(framed.camera.eye - centre);
+    JobScenes scenes;
+    make_views(framed, lattice_directions(50, false), scenes);
+    REQUIRE(scenes.cameras.size() == 50);
+    std::vector<glm::dvec3> directions;
+    glm::dvec3 mean(0.0);
+    for (const Camera& camera : scenes.cameras) {
+        CHECK(glm::length(camera.eye - centre) == Approx(distance));
+        CHECK(camera.lookat == centre);
+        CHECK(camera.sensor_height == scenes.cameras[0].sensor_height);  // the same scale in every view
+        directions.push_back(glm::normalize(camera.eye - centre));
+        mean += directions.back() / 50.0;
+    }
+    CHECK(glm::length(mean) < 0.02);  // balanced: no side of the object favoured
+    // Even: every view's nearest neighbour is about as far as any other's
+    // (for 50 points, about sqrt(4 pi / 50) = 0.5 radians).
+    double closest = 10.0, farthest = 0.0;
+    for (std::size_t i = 0; i < directions.size(); ++i) {
+        double nearest = 10.0;
+        for (std::size_t j = 0; j < directions.size(); ++j) {
+            if (i != j) nearest = std::min(nearest, std::acos(std::min(1.0, glm::dot(directions[i], directions[j]))));
+        }
+        closest = std::min(closest, nearest);
+        farthest = std::max(farthest, nearest);
+    }
+    CHECK(closest > 0.3);
+    CHECK(farthest < 0.6);
+    check_every_vertex_inside(framed, scenes);
+    // No seed: the same layout again gives the same cameras, bit for bit.
+    JobScenes again;
+    make_views(framed, lattice_directions(50, false), again);
+    for (std::size_t i = 0; i < 50; ++i) CHECK(again.cameras[i].eye == scenes.cameras[i].eye);
+}
+
+TEST_CASE("a hemisphere layout stays above the horizontal, one view of any layout is the framing") {
+    const Scene framed = io::frame_mesh(long_box(), 48, 64);
+    const glm::dvec3 centre = framed.camera.lookat;
+    REQUIRE(framed.camera.eye.y == Approx(centre.y));  // the framing looks horizontally
+    JobScenes scenes;
+    make_views(framed, lattice_directions(20, true), scenes);
+    REQUIRE(scenes.cameras.size() == 20);
+    for (const Camera& camera : scenes.cameras) CHECK(camera.eye.y > centre.y);
+    check_every_vertex_inside(framed, scenes);
+    for (const ViewDirection& direction : lattice_directions(100000, false)) {
+        REQUIRE(std::abs(direction.elevation) < std::acos(-1.0) / 2.0);  // never straight up or down
+    }
+    JobScenes one;
+    make_views(framed, lattice_directions(1, false), one);
+    CHECK(one.cameras[0].eye == framed.camera.eye);
+    CHECK(one.cameras[0].sensor_height == framed.camera.sensor_height);
+}
+
+TEST_CASE("elevation rings: one turntable per elevation, ring after ring") {
+    const Scene framed = io::frame_mesh(long_box(), 48, 64);
+    const glm::dvec3 centre = framed.camera.lookat;
+    const double distance = glm::length(framed.camera.eye - centre);
+    JobScenes scenes;
+    make_views(framed, turntable_directions(4, {-30.0, 0.0, 30.0}), scenes);
+    REQUIRE(scenes.cameras.size() == 12);
+    for (std::size_t view = 0; view < 12; ++view) {
+        INFO("view " << view);
+        const double expected_height = distance * std::sin((static_cast<double>(view / 4) - 1.0) * std::acos(-1.0) / 6.0);
+        CHECK(scenes.cameras[view].eye.y - centre.y == Approx(expected_height).margin(1e-9));
+    }
+    check_every_vertex_inside(framed, scenes);
+    // One ring is exactly the old turntable.
+    JobScenes ring, turntable;
+    make_views(framed, turntable_directions(6, {20.0}), ring);
+    make_turntable(framed, 6, 20.0, turntable);
+    for (std::size_t i = 0; i < 6; ++i) CHECK(ring.cameras[i].eye == turntable.cameras[i].eye);
 }
 
 TEST_CASE("the last mesh is kept for the next job, and read again when the file changes") {

@@ -3,7 +3,10 @@
 // Ctrl-C stops render and sheet with status 130 and the folder unchanged.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +20,7 @@
 
 #include "cli_run.hpp"
 #include "phongrast/io/aov_file.hpp"
+#include "phongrast/io/dataset_files.hpp"
 #include "phongrast/io/obj_file.hpp"
 #include "phongrast/io/scene_file.hpp"
 #include "phongrast/render.hpp"
@@ -45,14 +49,17 @@ std::map<std::string, std::string> snapshot(const TemporaryFolder& folder) {
     return files;
 }
 
-// Starts `phongrast ARGUMENTS...` in the folder, sends SIGINT after `delay`, and returns its exit status.
-int interrupt_after(const TemporaryFolder& folder, std::vector<std::string> arguments, std::chrono::milliseconds delay) {
+// Starts `phongrast ARGUMENTS...` in the folder, sends SIGINT after `delay`, and returns its exit status;
+// its standard error goes to `error_file` (a path).
+int interrupt_after(const TemporaryFolder& folder, std::vector<std::string> arguments, std::chrono::milliseconds delay,
+                    const std::string& error_file = "/dev/null") {
     const pid_t child = fork();
     if (child == 0) {
         if (chdir(folder.file("").c_str()) != 0) _exit(127);
         const int null = open("/dev/null", O_WRONLY);
+        const int errors = open(error_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         dup2(null, STDOUT_FILENO);
-        dup2(null, STDERR_FILENO);
+        dup2(errors, STDERR_FILENO);
         std::vector<char*> argv;
         static std::string program = PHONGRAST_CLI;
         argv.push_back(program.data());
@@ -163,6 +170,23 @@ TEST_CASE("Ctrl-C during render or sheet exits 130 and leaves the folder as it w
     CHECK(snapshot(folder) == before);
 }
 
+TEST_CASE("Ctrl-C while the mesh loads exits 130 with a message, and writes nothing") {
+    TemporaryFolder folder;
+    // 1.3 million triangles: loading takes a few hundred milliseconds, and
+    // the signal is sent within about 10 ms of the handler's installation,
+    // which comes just before loading starts.
+    REQUIRE(run_cli(folder, "generate --segments 16000 --sides 40 -o big.obj").status == 0);
+    std::filesystem::remove(folder.file("stdout.txt"));
+    std::filesystem::remove(folder.file("stderr.txt"));
+    const auto before = snapshot(folder);
+    const std::string errors = folder.file("interrupt-errors.txt");
+    CHECK(interrupt_after(folder, {"render", "big.obj", "--size", "64x64", "-o", "big.png"}, std::chrono::milliseconds(0),
+                          errors) == 130);
+    CHECK(read_text(errors).find("interrupted; no output written") != std::string::npos);
+    std::filesystem::remove(errors);  // the test's own capture
+    CHECK(snapshot(folder) == before);
+}
+
 TEST_CASE("render with aov and no -o writes NAME.exr, not an error") {
     TemporaryFolder folder;
     const Run run = run_cli(folder, "render '" + default_scene + "' --aov depth --size 16x12 -q");
@@ -174,4 +198,106 @@ TEST_CASE("render with aov and no -o writes NAME.exr, not an error") {
     io::read_exr_with_aovs(folder.file("default.exr"), image, planes);
     CHECK(image.rows == 12);
     CHECK(planes.depth.size() == 16u * 12u);
+}
+
+namespace {
+
+// The values of a one-file image as unsigned 16-bit (8-bit files are read as 0-255).
+std::vector<std::uint16_t> read_values(const std::string& path, int expected_channels) {
+    auto input = OIIO::ImageInput::open(path);
+    REQUIRE(input);
+    const OIIO::ImageSpec& spec = input->spec();
+    REQUIRE(spec.nchannels == expected_channels);
+    std::vector<std::uint16_t> values(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+    if (spec.format == OIIO::TypeDesc::UINT8) {
+        std::vector<std::uint8_t> bytes(values.size());
+        REQUIRE(input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, bytes.data()));
+        std::copy(bytes.begin(), bytes.end(), values.begin());
+    } else {
+        REQUIRE(spec.format == OIIO::TypeDesc::UINT16);
+        REQUIRE(input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT16, values.data()));
+    }
+    return values;
+}
+
+std::uint8_t to_byte(float value) { return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f)); }
+
+}  // namespace
+
+TEST_CASE("render with aov-files writes depth, mask, id, normal and object files holding the library's planes") {
+    TemporaryFolder folder;
+    const Run run = run_cli(folder, "render '" + default_scene +
+                                        "' --size 80x80 --samples 2 --aov-files all,depth16 --depth-scale 0.0005 -o k.png");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    const RenderResult expected = library_render(80, AovRequest{true, true, true, true, false}, 2);
+    const AovPlanes& planes = expected.aovs;
+    const std::size_t pixels = 80 * 80;
+
+    std::vector<float> depth(pixels);
+    auto exr = OIIO::ImageInput::open(folder.file("k.depth.exr"));
+    REQUIRE(exr);
+    REQUIRE(exr->spec().channelnames == std::vector<std::string>{"Z"});
+    REQUIRE(exr->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, depth.data()));
+    CHECK(depth == planes.depth);  // +inf on the background, as the EXR channel
+
+    const auto depth16 = read_values(folder.file("k.depth.png"), 1);
+    const auto mask = read_values(folder.file("k.mask.png"), 1);
+    const auto id = read_values(folder.file("k.id.png"), 1);
+    const auto normal = read_values(folder.file("k.normal.png"), 3);
+    const auto object = read_values(folder.file("k.object.png"), 1);
+    std::size_t covered = 0, partly = 0;
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const bool background = planes.id[p] < 0;
+        covered += !background;
+        partly += planes.alpha[p] > 0.0f && planes.alpha[p] < 1.0f;
+        CHECK(depth16[p] == (background ? 0 : std::lround(planes.depth[p] / 0.0005)));
+        CHECK(mask[p] == to_byte(planes.alpha[p]));
+        CHECK(id[p] == planes.id[p] + 1);
+        CHECK(object[p] == (background ? 0 : 1));  // one mesh: object 0
+        for (int c = 0; c < 3; ++c) {
+            CHECK(normal[3 * p + c] == (background ? 0 : to_byte((planes.normal[p][c] + 1.0f) * 0.5f)));
+        }
+    }
+    CHECK(covered > pixels / 10);
+    CHECK(partly > 0);  // edges: the mask is fractional, while id and depth stay whole
+    CHECK(run.out.find("k.depth.png") != std::string::npos);
+}
+
+TEST_CASE("dataset files: object numbers, and values a 16-bit file cannot hold refused before anything is written") {
+    TemporaryFolder folder;
+    AovPlanes planes;
+    planes.rows = 1;
+    planes.columns = 4;
+    planes.id = {-1, 9, 10, 30};
+    planes.depth = {std::numeric_limits<float>::infinity(), 1.0f, 2.0f, 70.0f};
+    io::DatasetFiles files;
+    files.object = true;
+    io::write_dataset_files(planes, {0, 10, 25}, folder.file("o.png"), files, io::DatasetFileOptions{});
+    CHECK(read_values(folder.file("o.object.png"), 1) == std::vector<std::uint16_t>{0, 1, 2, 3});
+
+    // 70 scene units at millimetre steps is past 65535: an error naming the scale it needs, and no file.
+    files = io::DatasetFiles{};
+    files.depth16 = true;
+    files.mask = true;  // would be written too, but nothing is
+    planes.alpha = {0.0f, 1.0f, 1.0f, 1.0f};
+    CHECK_THROWS_WITH(io::write_dataset_files(planes, {0}, folder.file("d.png"), files, io::DatasetFileOptions{}),
+                      Catch::Contains("d.depth.png: depth 70") && Catch::Contains("depth scale of at least 0.00106"));
+    CHECK_FALSE(std::filesystem::exists(folder.file("d.depth.png")));
+    CHECK_FALSE(std::filesystem::exists(folder.file("d.mask.png")));
+    io::DatasetFileOptions coarse;
+    coarse.depth_scale = 0.01;
+    io::write_dataset_files(planes, {0}, folder.file("d.png"), files, coarse);
+    CHECK(read_values(folder.file("d.depth.png"), 1) == std::vector<std::uint16_t>{0, 100, 200, 7000});
+
+    files = io::DatasetFiles{};
+    files.id = true;
+    CHECK_THROWS_WITH(io::check_dataset_files(files, {}, 70000, 1), Catch::Contains("70000 triangles"));
+    CHECK_NOTHROW(io::check_dataset_files(files, {}, 65534, 1));
+    files.depth16 = true;
+    io::DatasetFileOptions zero;
+    zero.depth_scale = 0.0;
+    CHECK_THROWS_WITH(io::check_dataset_files(files, zero, 10, 1), Catch::Contains("depth-scale"));
+    CHECK_THROWS_WITH(io::parse_dataset_files("depth,colour"), Catch::Contains("unknown 'colour'"));
+    CHECK(io::to_string(io::parse_dataset_files("all")) == "depth,mask,id,normal,object");
 }

@@ -80,7 +80,7 @@ TEST_CASE("options mode seed and threads 1 give the library's seed render") {
     CHECK(io::read_image(folder.file("seed.exr")).pixels == render(file.scene, RenderOptions::seed()).image.pixels);
 }
 
-TEST_CASE("options visibility and overdraw reach the library; overdraw never changes the picture") {
+TEST_CASE("options visibility and overdraw reach the library, overdraw never changes the picture") {
     TemporaryFolder folder;
     io::SceneFile file = io::read_scene_file(data_folder + "/triangle.json");
     file.scene.mesh = io::read_obj(file.mesh_path).mesh;

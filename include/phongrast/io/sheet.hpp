@@ -1,6 +1,6 @@
 // A labelled grid of images (the seed's eight figures on one sheet), with the
-// labels drawn by OpenImageIO in the DejaVuSans font (fonts-dejavu-core);
-// OpenImageIO is loaded (dlopen) on the first sheet with labels, not at start-up.
+// labels drawn by FreeType in the DejaVu Sans font (fonts-dejavu-core, found
+// through fontconfig).
 #ifndef PHONGRAST_IO_SHEET_HPP
 #define PHONGRAST_IO_SHEET_HPP
 
