@@ -57,7 +57,7 @@ TEST_CASE("camera_to_world is the same camera as its inverse world_to_camera") {
     CHECK(direct.scene.camera.opencv.eye() == glm::dvec3(-10, -2, 1));
 }
 
-TEST_CASE("an orthographic camera is read; focal is not required") {
+TEST_CASE("an orthographic camera is read, focal is not required") {
     const phongrast::io::SceneFile file = parse_scene_json(
         scene_with_camera(R"("projection": "orthographic", "eye": [0, 0, 5], "lookat": [0, 0, 0], "sensor": [3, 4])"),
         "s.json", "");

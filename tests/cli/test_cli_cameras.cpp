@@ -116,7 +116,7 @@ TEST_CASE("render --camera-to-world is the inverse pose") {
     CHECK(exr_pixels(folder, "c.exr") == render(scene_with(folder, inverse)).image.pixels);
 }
 
-TEST_CASE("render --K alone keeps the look-at camera's pose; with the look-at's own K it draws the look-at picture") {
+TEST_CASE("render --K alone keeps the look-at camera's pose, and with the look-at's own K it draws the look-at picture") {
     TemporaryFolder folder;
     write_fixtures(folder);
     const Scene look_at = load_scene_with_library(folder.file("scene.json"));
