@@ -47,6 +47,12 @@ void add_batch_command(CLI::App& app, BatchCommand& command) {
     }
     add_png_compression_flag(*batch, command.png_compression);
     add_dataset_file_flags(*batch, command.defaults.dataset_files, command.depth_scale);
+    batch->add_option("--camera-out", command.defaults.camera_out,
+                      "Default per-job camera file, a name pattern with {name} and {line} ending in .json: every "
+                      "view's camera as render --camera-out writes it (docs/datasets.md)");
+    batch->add_option("--transforms-out", command.defaults.transforms_out,
+                      "Default per-job transforms.json (instant-ngp / nerfstudio layout), a name pattern with {name} "
+                      "and {line}, e.g. {name}/transforms.json");
     batch->add_flag("-q,--quiet", command.quiet, "Print nothing but errors");
 }
 

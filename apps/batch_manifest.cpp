@@ -79,7 +79,8 @@ public:
 
     void reject_unknown_fields() const {
         std::set<std::string> known = {"scene", "mesh", "views", "elevation", "elevations", "layout", "shader",
-                                       "lighting", "size", "samples", "output", "aov_files", "depth_scale"};
+                                       "lighting", "size", "samples", "output", "aov_files", "depth_scale",
+                                       "camera_out", "transforms_out"};
         std::string named;  // the rendering options' names, from the library's table
         for (const NamedOption& option : named_options()) {
             known.insert(option.key);
@@ -88,7 +89,8 @@ public:
         for (auto it = object_.begin(); it != object_.end(); ++it) {
             if (known.count(it.key()) == 0) {
                 fail(it.key(), "unknown field; expected scene, mesh, views, elevation, elevations, layout, shader, "
-                               "lighting, size, samples, aov_files, depth_scale" + named + " or output");
+                               "lighting, size, samples, aov_files, depth_scale, camera_out, transforms_out" + named +
+                               " or output");
             }
         }
     }
@@ -108,6 +110,10 @@ JobSettings read_settings(const LineReader& reader, const JobSettings& defaults)
     }
     if (const std::optional<int> samples = reader.whole_number("samples", 1, 16)) settings.samples = samples;
     if (const std::string files = reader.text("aov_files"); !files.empty()) settings.dataset_files = files;
+    if (const std::string camera = reader.text("camera_out"); !camera.empty()) settings.camera_out = camera;
+    if (const std::string transforms = reader.text("transforms_out"); !transforms.empty()) {
+        settings.transforms_out = transforms;
+    }
     if (const std::optional<double> scale = reader.number("depth_scale")) {
         if (!(*scale > 0.0)) reader.fail("depth_scale", "expected a positive number of scene units per step");
         settings.depth_scale = scale;
@@ -232,7 +238,34 @@ std::string name_of(const BatchJob& job) {
     return fs::path(job.path).stem().string();
 }
 
+// `name` as a path inside the output folder (relative, no '..'), or the field's error.
+std::string inside_output_folder(const LineReader& reader, const char* field, const std::string& name) {
+    const fs::path path = fs::path(name).lexically_normal();
+    bool climbs = path.is_absolute();
+    for (const fs::path& part : path) climbs = climbs || part == "..";
+    if (climbs) reader.fail(field, "'" + name + "' must stay inside the output folder (relative, no '..')");
+    return path.string();
+}
+
+// A per-job file's pattern ({name}, {line}; one file for all views) expanded.
+std::string job_file(const LineReader& reader, const char* field, const std::string& pattern, const BatchJob& job) {
+    if (pattern.empty()) return "";
+    if (pattern.find("{view") != std::string::npos) {
+        reader.fail(field, "one file per job holds every view's camera: {view} has no value here");
+    }
+    std::string name;
+    try {
+        name = expand_output_pattern(pattern, name_of(job), job.line, 0, 1);
+    } catch (const std::exception& error) {
+        reader.fail(field, error.what());
+    }
+    if (fs::path(name).extension() != ".json") reader.fail(field, "expected a .json file name, got '" + name + "'");
+    return inside_output_folder(reader, field, name);
+}
+
 void read_outputs(const LineReader& reader, BatchJob& job) {
+    job.camera_file = job_file(reader, "camera_out", job.settings.camera_out, job);
+    job.transforms_file = job_file(reader, "transforms_out", job.settings.transforms_out, job);
     std::string pattern = reader.text("output");
     if (pattern.empty()) pattern = default_pattern(job);
     for (int view = 0; view < job.views; ++view) {
@@ -243,11 +276,7 @@ void read_outputs(const LineReader& reader, BatchJob& job) {
         } catch (const std::exception& error) {
             reader.fail("output", error.what());
         }
-        const fs::path path = fs::path(output).lexically_normal();
-        bool climbs = path.is_absolute();
-        for (const fs::path& part : path) climbs = climbs || part == "..";
-        if (climbs) reader.fail("output", "'" + output + "' must stay inside the output folder (relative, no '..')");
-        job.outputs.push_back(path.string());
+        job.outputs.push_back(inside_output_folder(reader, "output", output));
     }
 }
 
@@ -324,15 +353,17 @@ Manifest parse_manifest(const std::string& text, const std::string& name, const 
         ++line;
         if (content.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank lines are allowed
         BatchJob job = parse_line(content, name, line, folder, defaults);
+        std::vector<std::string> files = job.files_of_job();
         for (std::size_t view = 0; view < job.outputs.size(); ++view) {
-            for (const std::string& output : job.files_of_view(view)) {
-                const auto [it, inserted] = writer_of.emplace(output, line);
-                if (!inserted) {
-                    throw io::FileError(name + ":" + std::to_string(line) + ": /output: '" + output +
-                                        "' is also written by line " + std::to_string(it->second) +
-                                        (it->second == line ? " (add {view} to the pattern)" : "") +
-                                        "; every image needs its own name");
-                }
+            for (const std::string& file : job.files_of_view(view)) files.push_back(file);
+        }
+        for (const std::string& output : files) {
+            const auto [it, inserted] = writer_of.emplace(output, line);
+            if (!inserted) {
+                throw io::FileError(name + ":" + std::to_string(line) + ": /output: '" + output +
+                                    "' is also written by line " + std::to_string(it->second) +
+                                    (it->second == line ? " (add {view} to the pattern)" : "") +
+                                    "; every file needs its own name");
             }
         }
         manifest.jobs.push_back(std::move(job));
@@ -346,8 +377,18 @@ std::vector<std::string> BatchJob::files_of_view(std::size_t view) const {
     return files;
 }
 
+std::vector<std::string> BatchJob::files_of_job() const {
+    std::vector<std::string> files;
+    if (!camera_file.empty()) files.push_back(camera_file);
+    if (!transforms_file.empty()) files.push_back(transforms_file);
+    return files;
+}
+
 bool outputs_exist(const BatchJob& job, const std::string& output_folder) {
     std::error_code error;
+    for (const std::string& file : job.files_of_job()) {
+        if (!fs::is_regular_file(fs::path(output_folder) / file, error)) return false;
+    }
     for (std::size_t view = 0; view < job.outputs.size(); ++view) {
         for (const std::string& output : job.files_of_view(view)) {
             if (!fs::is_regular_file(fs::path(output_folder) / output, error)) return false;

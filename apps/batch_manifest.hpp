@@ -7,6 +7,8 @@
 //   {"mesh": "chair.obj", "layout": "sphere", "views": 50}  views spread evenly over a sphere
 //   {"mesh": "chair.obj", "layout": "hemisphere", "views": 50}   ... over the upper half
 //   {"mesh": "cup.obj", "aov_files": "mask,depth16", "depth_scale": 0.0005}   files next to each image
+//   {"mesh": "cup.obj", "layout": "sphere", "views": 50, "output": "cup/{view}.png",
+//    "camera_out": "cup/cameras.json", "transforms_out": "cup/transforms.json"}   the views' cameras
 //
 // Optional on every line: "shader", "lighting", "size" ("WxH"), "samples",
 // the rendering options of the library's table of names (option_names.hpp:
@@ -47,6 +49,10 @@ struct JobSettings {
     /// Files next to each image (render's --aov-files); empty: none.
     std::string dataset_files;
     std::optional<double> depth_scale;  ///< scene units per step of NAME.depth.png
+    /// Per-job camera files, name patterns with {name} and {line}: every
+    /// view's camera (render's --camera-out format), and a transforms.json.
+    std::string camera_out;
+    std::string transforms_out;
 };
 
 enum class JobKind { scene_file, inline_scene, mesh };
@@ -76,10 +82,16 @@ struct BatchJob {
     std::vector<std::string> outputs;  ///< one per view, relative to the output folder
     io::DatasetFiles dataset_files;    ///< written next to each output (settings.dataset_files parsed)
     io::DatasetFileOptions dataset_options;
+    /// The job's camera file and transforms.json, relative to the output
+    /// folder (settings.camera_out / transforms_out expanded); empty: none.
+    std::string camera_file;
+    std::string transforms_file;
 
     /// Every file of view `view`: its dataset files, then its image (written
     /// last, so an existing image means a complete view).
     std::vector<std::string> files_of_view(std::size_t view) const;
+    /// The job's own files (camera file, transforms.json), written after every view.
+    std::vector<std::string> files_of_job() const;
 };
 
 struct Manifest {

@@ -207,11 +207,13 @@ void remove_temporary_files(const std::vector<const BatchJob*>& jobs, const std:
     // io::replace_file_atomically names them ".STEM.tmp-XXXXXX.EXT" in the output's folder.
     std::map<fs::path, std::set<std::string>> names_by_folder;
     for (const BatchJob* job : jobs) {
+        std::vector<std::string> files = job->files_of_job();
         for (std::size_t view = 0; view < job->outputs.size(); ++view) {
-            for (const std::string& output : job->files_of_view(view)) {
-                const fs::path path = fs::path(output_folder) / output;
-                names_by_folder[path.parent_path()].insert(path.filename().string());
-            }
+            for (const std::string& output : job->files_of_view(view)) files.push_back(output);
+        }
+        for (const std::string& file : files) {
+            const fs::path path = fs::path(output_folder) / file;
+            names_by_folder[path.parent_path()].insert(path.filename().string());
         }
     }
     for (const auto& [folder, names] : names_by_folder) {

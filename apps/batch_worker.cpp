@@ -12,8 +12,10 @@
 
 #include "batch_queue.hpp"
 #include "batch_views.hpp"
+#include "phongrast/io/camera_record.hpp"
 #include "phongrast/io/dataset_files.hpp"
 #include "phongrast/io/image_file.hpp"
+#include "phongrast/io/text_file.hpp"
 
 namespace phongrast::cli {
 namespace {
@@ -59,6 +61,8 @@ struct WriteItem {
     std::vector<std::size_t> object_first_triangles;
     std::string error;            ///< end of job: why it failed, if it did before writing
     double render_seconds = 0.0;  ///< end of job: its views' render time
+    /// End of job: the job's own files (path, text), written once every view's files are.
+    std::vector<std::pair<std::string, std::string>> job_files;
 };
 
 void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, int threads,
@@ -97,6 +101,17 @@ void write_images(std::size_t count, BoundedQueue<WriteItem>& pending, Reporter&
             continue;
         }
         if (error.empty()) error = item.error;
+        if (error.empty()) {
+            try {
+                for (const auto& [path, text] : item.job_files) {
+                    const fs::path folder = fs::path(path).parent_path();
+                    if (!folder.empty()) fs::create_directories(folder);
+                    io::write_text_file(path, text);
+                }
+            } catch (const std::exception& failure) {
+                error = failure.what();
+            }
+        }
         nlohmann::json message = {{"finished", item.position},
                                   {"status", error.empty() ? "done" : "failed"},
                                   {"render_seconds", item.render_seconds}};
@@ -105,6 +120,33 @@ void write_images(std::size_t count, BoundedQueue<WriteItem>& pending, Reporter&
         error.clear();
         ++finished;
     }
+}
+
+/// The job's camera file and transforms.json (BatchJob::files_of_job), one
+/// record per view. Computed before rendering: a camera the layout cannot
+/// hold (transforms.json: orthographic, skew) fails the job before any view.
+/// (Sets the scene's camera to each view's in turn: the render sets it again.)
+std::vector<std::pair<std::string, std::string>> camera_files(const BatchJob& job, JobScenes& scenes,
+                                                              const std::string& output_folder) {
+    std::vector<std::pair<std::string, std::string>> files;
+    const auto records_for = [&](const std::string& file) {
+        Scene& scene = scenes.prepared.scene;  // not a copy: it holds the mesh
+        std::vector<io::CameraRecord> records;
+        for (std::size_t view = 0; view < scenes.cameras.size(); ++view) {
+            scene.camera = scenes.cameras[view];
+            records.push_back(io::camera_record(scene, (fs::path(output_folder) / job.outputs[view]).string(), file));
+        }
+        return records;
+    };
+    if (!job.camera_file.empty()) {
+        const std::string path = (fs::path(output_folder) / job.camera_file).string();
+        files.emplace_back(path, io::camera_records_json(records_for(path)));
+    }
+    if (!job.transforms_file.empty()) {
+        const std::string path = (fs::path(output_folder) / job.transforms_file).string();
+        files.emplace_back(path, io::transforms_json(records_for(path)));
+    }
+    return files;
 }
 
 /// Renders every view of one loaded job and queues its images, then its end.
@@ -121,6 +163,7 @@ void render_job(Renderer& renderer, std::size_t position, const BatchJob& job, L
                 io::check_dataset_files(job.dataset_files, job.dataset_options, scenes.prepared.scene);
                 job.dataset_files.add_planes_to(scenes.prepared.options.aovs);
             }
+            end.job_files = camera_files(job, scenes, output_folder);
             renderer.set_options(scenes.prepared.options);
             for (std::size_t view = 0; view < scenes.cameras.size(); ++view) {
                 scenes.prepared.scene.camera = scenes.cameras[view];

@@ -1,8 +1,10 @@
 #include "phongrast/io/camera_record.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <limits>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -130,6 +132,45 @@ CameraRecord camera_record(const Scene& scene, const std::string& image_path, co
         }
     }
     return record;
+}
+
+std::string transforms_json(const std::vector<CameraRecord>& records) {
+    if (records.empty()) throw std::invalid_argument("transforms.json: no images");
+    // The intrinsics of one record, as the layout names them.
+    const auto intrinsics = [](const CameraRecord& record) {
+        if (record.camera.model == CameraModel::orthographic) {
+            throw std::invalid_argument("transforms.json: " + record.file_path +
+                                        ": an orthographic camera has no focal length; the layout needs one");
+        }
+        const OpenCvCamera k = opencv_form(record.camera, record.rows, record.columns);
+        if (k.skew != 0.0) {
+            throw std::invalid_argument("transforms.json: " + record.file_path + ": K has skew " +
+                                        std::to_string(k.skew) + "; the layout has no skew");
+        }
+        return json{{"fl_x", k.fx}, {"fl_y", k.fy}, {"cx", k.cx + 0.5}, {"cy", k.cy + 0.5},
+                    {"w", record.columns}, {"h", record.rows}};
+    };
+    const json first = intrinsics(records.front());
+    json document = {{"camera_model", "OPENCV"}};
+    for (auto it = first.begin(); it != first.end(); ++it) document[it.key()] = it.value();
+    const double fl_x = first["fl_x"].get<double>(), fl_y = first["fl_y"].get<double>();
+    document["camera_angle_x"] = 2.0 * std::atan(records.front().columns / (2.0 * fl_x));
+    document["camera_angle_y"] = 2.0 * std::atan(records.front().rows / (2.0 * fl_y));
+    json frames = json::array();
+    for (const CameraRecord& record : records) {
+        json frame = {{"file_path", record.file_path}};
+        const json own = intrinsics(record);
+        if (own != first) {
+            for (auto it = own.begin(); it != own.end(); ++it) frame[it.key()] = it.value();
+        }
+        frame["transform_matrix"] =
+            rows_of(opengl_camera_to_world(opencv_pose(record.camera, record.rows, record.columns)));
+        frames.push_back(std::move(frame));
+    }
+    document["frames"] = std::move(frames);
+    std::string text;
+    write_compact(document, 0, text);
+    return text + "\n";
 }
 
 std::string camera_records_json(const std::vector<CameraRecord>& records) {

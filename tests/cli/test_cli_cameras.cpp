@@ -4,13 +4,16 @@
 // of the same camera built through the C++ API.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
 #include "phongrast/io/aov_file.hpp"
+#include "phongrast/io/camera_record.hpp"
 #include "io_test_files.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/io/image_file.hpp"
@@ -385,4 +388,38 @@ TEST_CASE("render --camera-out of an orthographic camera has no K and says so") 
     CHECK(document.at("camera").at("projection") == "orthographic");
     CHECK(record.at("world_to_camera").at(2).at(3).get<double>() ==
           Approx(std::sqrt(0.5 * 0.5 + 0.3 * 0.3 + 5.0 * 5.0)));  // the eye's distance along f to the origin
+}
+
+TEST_CASE("transforms.json: OpenGL camera-to-world and centres at +0.5; no orthographic or skewed camera") {
+    Scene scene;
+    scene.image.rows = 40;
+    scene.image.columns = 60;
+    scene.camera = Camera::look_at({1, 2, 5}, {0, 0, 0}, {0, 1, 0}, 2.0, 1.0, 1.5);
+    io::CameraRecord record = io::camera_record(scene, "/data/set/a.png", "/data/set/transforms.json");
+    const nlohmann::json transforms = nlohmann::json::parse(io::transforms_json({record, record}));
+    const OpenCvCamera k = opencv_form(scene.camera, 40, 60);
+    CHECK(transforms["camera_model"] == "OPENCV");
+    CHECK(transforms["fl_x"].get<double>() == k.fx);
+    CHECK(transforms["cx"].get<double>() == k.cx + 0.5);
+    CHECK(transforms["cx"].get<double>() == 30.0);  // the look-at camera's centre: N / 2
+    CHECK(transforms["w"] == 60);
+    CHECK(transforms["camera_angle_x"].get<double>() == Approx(2.0 * std::atan(60.0 / (2.0 * k.fx))));
+    REQUIRE(transforms["frames"].size() == 2);
+    CHECK(transforms["frames"][0]["file_path"] == "a.png");
+    CHECK_FALSE(transforms["frames"][1].contains("fl_x"));  // the same intrinsics: not repeated
+    // The last column of camera_to_world is the eye; its z axis points backward (from the look-at point).
+    const auto& m = transforms["frames"][0]["transform_matrix"];
+    CHECK(m[0][3].get<double>() == Approx(1.0));
+    CHECK(m[1][3].get<double>() == Approx(2.0));
+    CHECK(m[2][3].get<double>() == Approx(5.0));
+    const glm::dvec3 backward = glm::normalize(glm::dvec3(1, 2, 5));
+    CHECK(m[0][2].get<double>() == Approx(backward.x));
+    CHECK(m[2][2].get<double>() == Approx(backward.z));
+
+    record.camera = Camera::orthographic({1, 2, 5}, {0, 0, 0}, {0, 1, 0}, 1.0, 1.5);
+    CHECK_THROWS_WITH(io::transforms_json({record}), Catch::Contains("orthographic camera has no focal length"));
+    record.camera = Camera::from_opencv({{{50.0, 3.0, 30.0}, {0.0, 50.0, 20.0}, {0.0, 0.0, 1.0}}},
+                                        {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 5}}});
+    CHECK_THROWS_WITH(io::transforms_json({record}), Catch::Contains("K has skew 3"));
+    CHECK_THROWS_WITH(io::transforms_json({}), Catch::Contains("no images"));
 }

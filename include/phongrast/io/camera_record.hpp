@@ -38,6 +38,17 @@ CameraRecord camera_record(const Scene& scene, const std::string& image_path, co
 /// near]}.
 std::string camera_records_json(const std::vector<CameraRecord>& records);
 
+/// The same records as a `transforms.json` in the layout instant-ngp and
+/// nerfstudio read: "camera_model": "OPENCV", fl_x, fl_y, cx, cy (pixel
+/// centres at +0.5, as this contract and those tools have them: OpenCV's
+/// cx + 0.5), w, h, camera_angle_x and camera_angle_y of the first record,
+/// then "frames": [{file_path (as in the record: relative to the
+/// transforms file), transform_matrix (camera_to_world, OpenGL axes)}]; a
+/// frame whose intrinsics differ from the first's carries its own fl_x, fl_y,
+/// cx, cy, w, h. Throws std::invalid_argument for an empty list, an
+/// orthographic camera (no K) or a skewed K (the layout has no skew).
+std::string transforms_json(const std::vector<CameraRecord>& records);
+
 }  // namespace phongrast::io
 
 #endif  // PHONGRAST_IO_CAMERA_RECORD_HPP
