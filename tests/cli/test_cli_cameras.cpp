@@ -390,7 +390,7 @@ TEST_CASE("render --camera-out of an orthographic camera has no K and says so") 
           Approx(std::sqrt(0.5 * 0.5 + 0.3 * 0.3 + 5.0 * 5.0)));  // the eye's distance along f to the origin
 }
 
-TEST_CASE("transforms.json: OpenGL camera-to-world and centres at +0.5; no orthographic or skewed camera") {
+TEST_CASE("transforms.json: OpenGL camera-to-world and centres at +0.5, and no orthographic or skewed camera") {
     Scene scene;
     scene.image.rows = 40;
     scene.image.columns = 60;
