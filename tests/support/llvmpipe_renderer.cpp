@@ -13,6 +13,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -165,7 +166,7 @@ GLuint compile(GLenum kind, const std::string& source) {
     return shader;
 }
 
-/// The attribute names in the order of upload_corners' interleaved layout.
+/// The attribute names in the order of upload_vertices' interleaved layout.
 constexpr std::array<const char*, 8> kAttributeNames = {"a_position", "a_normal", "a_color", "a_texcoord",
                                                         "a_ka",       "a_kd",     "a_ks",    "a_shininess_textured"};
 constexpr std::array<int, 8> kAttributeSizes = {3, 3, 3, 2, 3, 3, 3, 2};
@@ -369,45 +370,100 @@ void upload_texture(const phongrast::TextureMap& map, GLuint texture) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(map.wrap_t));
 }
 
-/// Each triangle's three corners, de-indexed (texture coordinates, file
-/// normals and materials are per corner or per face), kFloatsPerCorner floats
-/// each, bound to the attributes of kAttributeNames. Each face's material
-/// follows the contract's precedence for a one-mesh scene: the scene's
-/// fields, then the face's own, then the base material.
-void upload_corners(const phongrast::Scene& scene, GLuint buffer) {
+/// What one GL vertex is made of: a position with the texture coordinate,
+/// file normal and material of the corners that share it.
+struct CornerKey {
+    std::uint32_t position = 0, texcoord = phongrast::kNoIndex, normal = phongrast::kNoIndex,
+                  material = phongrast::kNoIndex;
+    bool operator==(const CornerKey& other) const {
+        return position == other.position && texcoord == other.texcoord && normal == other.normal &&
+               material == other.material;
+    }
+};
+struct CornerKeyHash {
+    std::size_t operator()(const CornerKey& key) const {
+        std::uint64_t h = key.position;
+        for (std::uint32_t part : {key.texcoord, key.normal, key.material}) h = h * 0x9E3779B97F4A7C15ull ^ part;
+        return std::size_t(h ^ (h >> 29));
+    }
+};
+
+/// The vertex buffer (kFloatsPerCorner floats per vertex, bound to the
+/// attributes of kAttributeNames) and, per triangle corner, its vertex.
+///
+/// Vertices are welded as an OpenGL application would weld an OBJ: corners
+/// share a vertex when they share position, texture coordinate, file normal
+/// and material, so a mesh without per-corner attributes keeps one vertex per
+/// position, in its own order (the vertex shader runs once per vertex, as it
+/// did before textures were added to this comparison). Each face's material
+/// follows the contract's precedence for a one-mesh scene: the scene's fields,
+/// then the face's own, then the base material.
+std::vector<std::uint32_t> upload_vertices(const phongrast::Scene& scene, GLuint buffer) {
     const phongrast::Mesh& mesh = scene.mesh;
     const bool file_normals = scene.normals == phongrast::NormalSource::file && !mesh.file_normals.empty();
-    std::vector<float> interleaved;
-    interleaved.reserve(mesh.triangles.size() * 3 * kFloatsPerCorner);
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-        const std::uint32_t material_index = t < mesh.face_materials.size() ? mesh.face_materials[t] : phongrast::kNoIndex;
+    const auto key_of = [&](std::size_t t, int corner) {
+        CornerKey key;
+        key.position = mesh.triangles[t][std::size_t(corner)];
+        key.material = t < mesh.face_materials.size() ? mesh.face_materials[t] : phongrast::kNoIndex;
         const phongrast::FaceMaterial* face =
-            material_index == phongrast::kNoIndex ? nullptr : &mesh.materials[material_index];
+            key.material == phongrast::kNoIndex ? nullptr : &mesh.materials[key.material];
+        const bool textured = face != nullptr && face->texture && face->texture->image &&
+                              t < mesh.texcoord_triangles.size() &&
+                              mesh.texcoord_triangles[t][0] != phongrast::kNoIndex;
+        if (textured) key.texcoord = mesh.texcoord_triangles[t][std::size_t(corner)];
+        if (file_normals && t < mesh.file_normal_triangles.size()) {
+            const std::uint32_t k = mesh.file_normal_triangles[t][std::size_t(corner)];
+            if (k != phongrast::kNoIndex && mesh.file_normals[k] != glm::vec3(0.0f)) key.normal = k;
+        }
+        return key;
+    };
+    std::vector<float> interleaved;
+    const auto append = [&](const CornerKey& key) {
+        const phongrast::FaceMaterial* face =
+            key.material == phongrast::kNoIndex ? nullptr : &mesh.materials[key.material];
         phongrast::PhongMaterial material = scene.material;
         if (face != nullptr) material = face->coefficients.over(material);
         material = scene.material_fields.over(material);
         const glm::vec3 factor = face != nullptr ? face->color_factor : glm::vec3(1.0f);
-        const bool has_texcoords = t < mesh.texcoord_triangles.size();
-        const bool textured = face != nullptr && face->texture && face->texture->image && has_texcoords &&
-                              mesh.texcoord_triangles[t][0] != phongrast::kNoIndex;
+        const glm::vec3 p(mesh.positions[key.position]);
+        const glm::vec3 normal = key.normal != phongrast::kNoIndex ? mesh.file_normals[key.normal] : mesh.normals[key.position];
+        const glm::vec3 c = (mesh.colors.empty() ? glm::vec3(1.0f) : mesh.colors[key.position]) * factor;
+        const bool textured = key.texcoord != phongrast::kNoIndex;
+        const glm::vec2 st = textured ? mesh.texcoords[key.texcoord] : glm::vec2(0.0f);
+        for (float value : {p.x, p.y, p.z, normal.x, normal.y, normal.z, c.x, c.y, c.z, st.x, st.y, material.ka.x,
+                            material.ka.y, material.ka.z, material.kd.x, material.kd.y, material.kd.z, material.ks.x,
+                            material.ks.y, material.ks.z, material.n, textured ? 1.0f : 0.0f}) {
+            interleaved.push_back(value);
+        }
+    };
+
+    std::vector<std::uint32_t> corner_vertex(mesh.triangles.size() * 3);
+    std::vector<CornerKey> keys(corner_vertex.size());
+    bool per_position = true;  // every corner of a position has the same key
+    std::vector<std::uint32_t> key_of_position(mesh.positions.size(), phongrast::kNoIndex);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         for (int corner = 0; corner < 3; ++corner) {
-            const std::uint32_t v = mesh.triangles[t][std::size_t(corner)];
-            const glm::vec3 p(mesh.positions[v]);
-            glm::vec3 normal = mesh.normals[v];
-            if (file_normals && t < mesh.file_normal_triangles.size()) {
-                const std::uint32_t k = mesh.file_normal_triangles[t][std::size_t(corner)];
-                if (k != phongrast::kNoIndex && mesh.file_normals[k] != glm::vec3(0.0f)) normal = mesh.file_normals[k];
-            }
-            const glm::vec3 c = (mesh.colors.empty() ? glm::vec3(1.0f) : mesh.colors[v]) * factor;
-            const glm::vec2 st = textured ? mesh.texcoords[mesh.texcoord_triangles[t][std::size_t(corner)]] : glm::vec2(0.0f);
-            for (float value : {p.x, p.y, p.z, normal.x, normal.y, normal.z, c.x, c.y, c.z, st.x, st.y,
-                                material.ka.x, material.ka.y, material.ka.z, material.kd.x, material.kd.y,
-                                material.kd.z, material.ks.x, material.ks.y, material.ks.z, material.n,
-                                textured ? 1.0f : 0.0f}) {
-                interleaved.push_back(value);
-            }
+            const CornerKey key = key_of(t, corner);
+            keys[3 * t + std::size_t(corner)] = key;
+            std::uint32_t& first = key_of_position[key.position];
+            if (first == phongrast::kNoIndex) first = std::uint32_t(3 * t + std::size_t(corner));
+            per_position = per_position && keys[first] == key;
         }
     }
+    if (per_position) {
+        for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+            append(key_of_position[v] == phongrast::kNoIndex ? CornerKey{std::uint32_t(v)} : keys[key_of_position[v]]);
+        }
+        for (std::size_t k = 0; k < keys.size(); ++k) corner_vertex[k] = keys[k].position;
+    } else {
+        std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertex_of;
+        for (std::size_t k = 0; k < keys.size(); ++k) {
+            const auto [it, inserted] = vertex_of.emplace(keys[k], std::uint32_t(vertex_of.size()));
+            if (inserted) append(keys[k]);
+            corner_vertex[k] = it->second;
+        }
+    }
+
     glBindBuffer(GL_ARRAY_BUFFER, buffer);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), GL_STATIC_DRAW);
     const GLsizei stride = kFloatsPerCorner * sizeof(float);
@@ -418,6 +474,7 @@ void upload_corners(const phongrast::Scene& scene, GLuint buffer) {
                               reinterpret_cast<const void*>(offset * sizeof(float)));
         offset += std::size_t(kAttributeSizes[attribute]);
     }
+    return corner_vertex;
 }
 
 /// The uniforms of kLightingGlsl, the texture unit and the camera matrix.
@@ -466,6 +523,7 @@ struct LlvmpipeRenderer::State {
     // What draw() needs every frame.
     std::vector<glm::dvec3> positions;
     std::vector<phongrast::Triangle> triangles;
+    std::vector<std::uint32_t> corner_vertex;  // per triangle corner, its GL vertex
     ViewAxis axis;
     glm::vec3 background{0.0f};
     std::vector<double> vertex_depth;
@@ -529,7 +587,7 @@ void LlvmpipeRenderer::load(const phongrast::Scene& scene) {
     glDisable(GL_DITHER);
     glDisable(GL_BLEND);
 
-    upload_corners(scene, s.vertex_buffer);
+    s.corner_vertex = upload_vertices(scene, s.vertex_buffer);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s.index_buffer);
     glActiveTexture(GL_TEXTURE0);
     if (texture != nullptr) upload_texture(*texture, s.texture);
@@ -568,12 +626,11 @@ FrameTimes LlvmpipeRenderer::draw() {
     std::stable_sort(s.order.begin(), s.order.end(), [&s](std::uint32_t a, std::uint32_t b) {
         return s.triangle_depth[a] > s.triangle_depth[b];
     });
-    // The corners are de-indexed: triangle t is corners 3t, 3t + 1, 3t + 2.
     for (std::size_t k = 0; k < s.order.size(); ++k) {
-        const std::uint32_t first = 3 * s.order[k];
-        s.indices[3 * k] = first;
-        s.indices[3 * k + 1] = first + 1;
-        s.indices[3 * k + 2] = first + 2;
+        const std::size_t first = 3 * std::size_t(s.order[k]);
+        s.indices[3 * k] = s.corner_vertex[first];
+        s.indices[3 * k + 1] = s.corner_vertex[first + 1];
+        s.indices[3 * k + 2] = s.corner_vertex[first + 2];
     }
     times.sort = seconds_since(start);
 
