@@ -1,20 +1,31 @@
 // bench_texture_cost [phong|gouraud|flat]: what a texture map costs. A
 // 1024 x 1024 render with the shader given (Phong when none; exact mode, two
-// lights) of a ~100k-triangle sphere textured with a
+// lights, normals given) of a ~100k-triangle sphere textured with a
 // 1024 x 1024 image (spherical (s, t), bilinear and nearest), against the same
 // sphere untextured (a version-1 mesh), in interleaved rounds in one process
-// so a change in the machine's load hits every contender alike. Prints one
-// Markdown row per contender: median milliseconds and the ratio to untextured.
+// so a change in the machine's load hits every contender alike. When OSMesa
+// was found at configure time, Mesa's llvmpipe draws the same two scenes too
+// (tests/support/llvmpipe_renderer: GL_LINEAR on level 0, T x A + S, its own
+// painter's sort; Gouraud and Phong only), with LP_NUM_THREADS set to the
+// cores phongrast uses. Prints one Markdown row per contender: median
+// milliseconds, the ratio to phongrast untextured, and to llvmpipe on the
+// same scene.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "phongrast/render.hpp"
 #include "support/meshes.hpp"
 #include "support/timing.hpp"
+#ifdef PHONGRAST_HAVE_LLVMPIPE
+#include "support/llvmpipe_renderer.hpp"
+#endif
 
 namespace {
 
@@ -62,7 +73,9 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    const Mesh sphere = support::icosphere(71);  // 100,820 triangles
+    // Normals given, as llvmpipe needs them: neither renderer computes them per frame.
+    Mesh sphere = support::icosphere(71);  // 100,820 triangles
+    sphere.normals = calculate_normals(sphere);
     Mesh textured = sphere;
     constexpr double kPi = 3.14159265358979323846;
     for (const glm::dvec3& p : sphere.positions) {
@@ -84,13 +97,37 @@ int main(int argc, char** argv) {
     const auto timed = [](Renderer& renderer, const Scene& scene) {
         return [&renderer, &scene] { return support::time_ms([&] { renderer.render(scene); }); };
     };
-    const std::vector<double> medians = support::interleaved_medians(
-        9, 1, {timed(untextured_renderer, plain), timed(bilinear_renderer, with_texture),
-               timed(nearest_renderer, with_texture)});
-    std::printf("| render (1024 x 1024, %s, exact, %zu triangles, all cores) | median ms | / untextured |\n",
+    std::vector<std::string> names = {"phongrast untextured", "phongrast textured, bilinear",
+                                      "phongrast textured, nearest"};
+    std::vector<std::function<double()>> contenders = {timed(untextured_renderer, plain),
+                                                       timed(bilinear_renderer, with_texture),
+                                                       timed(nearest_renderer, with_texture)};
+#ifdef PHONGRAST_HAVE_LLVMPIPE
+    // Two contexts, each holding one scene, drawn in the same interleaved rounds.
+    // LP_NUM_THREADS is read when the first context is created.
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    setenv("LP_NUM_THREADS", std::to_string(cores).c_str(), 1);
+    support::LlvmpipeRenderer llvmpipe_plain, llvmpipe_textured;
+    if (shader != Shader::flat) {
+        llvmpipe_plain.load(plain);
+        llvmpipe_textured.load(with_texture);
+        names.insert(names.end(), {"llvmpipe untextured", "llvmpipe textured"});
+        contenders.push_back([&] { return 1e3 * llvmpipe_plain.draw().total; });
+        contenders.push_back([&] { return 1e3 * llvmpipe_textured.draw().total; });
+    }
+    std::printf("llvmpipe: %s, LP_NUM_THREADS=%u\n\n", llvmpipe_plain.description().c_str(), cores);
+#endif
+    const std::vector<double> medians = support::interleaved_medians(9, 1, contenders);
+    const bool with_llvmpipe = medians.size() == 5;
+    std::printf("| render (1024 x 1024, %s, exact, %zu triangles, all cores) | median ms | / phongrast untextured | / llvmpipe, same scene |\n",
                 to_string(shader), sphere.triangles.size());
-    std::printf("|---|---|---|\n");
-    const char* names[] = {"untextured", "textured, bilinear", "textured, nearest"};
-    for (int i = 0; i < 3; ++i) std::printf("| %s | %.1f | %.2f |\n", names[i], medians[i], medians[i] / medians[0]);
+    std::printf("|---|---|---|---|\n");
+    for (std::size_t i = 0; i < medians.size(); ++i) {
+        const bool is_textured = i == 1 || i == 2 || i == 4;
+        std::string versus_llvmpipe = "";
+        if (with_llvmpipe && i < 3) versus_llvmpipe = std::to_string(medians[i] / medians[is_textured ? 4 : 3]).substr(0, 4);
+        std::printf("| %s | %.1f | %.2f | %s |\n", names[i].c_str(), medians[i], medians[i] / medians[0],
+                    versus_llvmpipe.c_str());
+    }
     return 0;
 }
