@@ -30,6 +30,7 @@
 #include "support/scenes.hpp"
 #include "support/shared_scenes.hpp"
 #include "support/timing.hpp"
+#include "texture_filters.hpp"
 
 namespace fs = std::filesystem;
 using namespace phongrast;
@@ -49,6 +50,7 @@ struct Settings {
     std::size_t screen_max_triangles = 20000;
     std::string shared_assets = shared_assets_folder();
     std::string default_scene = PHONGRAST_PROJECT_ASSETS_DIR "/default.json";
+    bool texture_filters = true;
 };
 
 struct Row {
@@ -328,6 +330,7 @@ int main(int argc, char** argv) {
         ->delimiter(',');
     app.add_flag("!--no-shared-meshes", s.shared_meshes, "skip the meshes in ../shared/assets");
     app.add_option("--shared-assets", s.shared_assets, "folder of the shared meshes");
+    app.add_flag("!--no-texture-filters", s.texture_filters, "skip the texture filter tables (a floor and a close-up)");
     app.add_option("--screen-max-triangles", s.screen_max_triangles,
                    "screen all 480 combinations only for meshes up to this many triangles");
     CLI11_PARSE(app, argc, argv);
@@ -342,6 +345,7 @@ int main(int argc, char** argv) {
         md << "<!-- written by phongrast_accuracy --size " << s.size << " --runs " << s.runs << "; "
            << tbb::info::default_concurrency() << " threads for 'all threads' -->\n\n";
         for (const NamedScene& scene : scenes) md << run_scene(scene, s);
+        if (s.texture_filters) md << texture_filter_section(s.size, s.runs);
         fs::create_directories(s.out);
         const std::string path = s.out + "/accuracy_tables.md";
         {
