@@ -1,14 +1,15 @@
 // The same textured model as OBJ + MTL and as a GLB converted by an outside
 // tool (the npm package obj2gltf): the loader must give the same per-corner
 // positions, texture coordinates (glTF's v flipped back) and file normals
-// from both, up to float rounding, and the same texture.
+// from both, up to float rounding, and the same texture; rendered textured
+// with the file's normals, the two give the same picture.
 //
 // Needs /work/shared/assets/spot.obj and spot_texture.png (PHONGRAST_SHARED_ASSETS_DIR,
-// or the folder in $PHONGRAST_SHARED_ASSETS)
-// and obj2gltf: $PHONGRAST_OBJ2GLTF, else `obj2gltf` on the PATH
-// (`npm install obj2gltf` in any folder, then
-// PHONGRAST_OBJ2GLTF=that/folder/node_modules/.bin/obj2gltf). Without them
-// the test says "skipped: why".
+// or the folder in $PHONGRAST_SHARED_ASSETS) and obj2gltf: $PHONGRAST_OBJ2GLTF,
+// else `obj2gltf` on the PATH, else the copy this test installs once with npm
+// (when npm is on the PATH and its registry answers) into the build folder's
+// test-tools/ (PHONGRAST_TEST_TOOLS_DIR). Without them the test says
+// "skipped: why".
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -19,16 +20,68 @@
 
 #include <glm/geometric.hpp>
 
+#include <unistd.h>
+
 #include "io_test_files.hpp"
+#include "phongrast/render.hpp"
+#include "support/image_compare.hpp"
 #include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/obj_file.hpp"
 
 namespace {
 
-std::string obj2gltf_command() {
+// The version installed when none is given: the one this test was written against.
+constexpr const char* kObj2gltfPackage = "obj2gltf@3.2.0";
+
+/// obj2gltf from npm into PHONGRAST_TEST_TOOLS_DIR, once per build folder:
+/// installed into a folder of its own and renamed into place, so that two
+/// test processes at once cannot leave a half-installed copy. Returns the
+/// command, or empty (with `why` set) when npm is missing or fails.
+std::string installed_obj2gltf(std::string& why) {
+    namespace fs = std::filesystem;
+    const fs::path tools = PHONGRAST_TEST_TOOLS_DIR;
+    const fs::path command = tools / "obj2gltf" / "node_modules" / ".bin" / "obj2gltf";
+    if (fs::exists(command)) return command.string();
+    if (std::system("command -v npm > /dev/null 2>&1") != 0) {
+        why = "obj2gltf not found and npm is not on the PATH to install it";
+        return {};
+    }
+    fs::create_directories(tools);
+    const fs::path staging = tools / ("obj2gltf.installing." + std::to_string(::getpid()));
+    const fs::path log = tools / "obj2gltf-npm-install.log";
+    const std::string install = "npm install --no-audit --no-fund --loglevel=error --prefix '" + staging.string() +
+                                "' " + kObj2gltfPackage + " > '" + log.string() + "' 2>&1";
+    const bool installed = std::system(install.c_str()) == 0;
+    std::error_code ignored;
+    if (installed) fs::rename(staging, tools / "obj2gltf", ignored);  // fails harmlessly if another test won
+    fs::remove_all(staging, ignored);
+    if (fs::exists(command)) return command.string();
+    why = std::string("obj2gltf not found and `npm install ") + kObj2gltfPackage + "` failed (see " + log.string() +
+          ")";
+    return {};
+}
+
+std::string obj2gltf_command(std::string& why) {
     if (const char* given = std::getenv("PHONGRAST_OBJ2GLTF"); given != nullptr && *given != '\0') return given;
     if (std::system("command -v obj2gltf > /dev/null 2>&1") == 0) return "obj2gltf";
-    return {};
+    return installed_obj2gltf(why);
+}
+
+/// A textured Phong picture of `mesh` with the file's normals, spot seen from the front left.
+phongrast::Image picture_of(const phongrast::Mesh& mesh) {
+    phongrast::Scene scene;
+    scene.mesh = mesh;
+    scene.normals = phongrast::NormalSource::file;
+    // The scene's coefficients win over the MTL's Kd (which the GLB lacks).
+    scene.material_fields.ka = glm::vec3(0.2f);
+    scene.material_fields.kd = glm::vec3(0.8f);
+    scene.material_fields.ks = glm::vec3(0.3f);
+    scene.material_fields.n = 20.0f;
+    scene.camera = phongrast::Camera::look_at({-1.2, 0.8, 2.6}, {0.0, 0.1, 0.0}, {0.0, 1.0, 0.0}, 1.0, 1.0, 1.0);
+    scene.image.rows = scene.image.columns = 128;
+    scene.lights = {phongrast::PointLight{{2.0, 3.0, 4.0}, glm::vec3(0.9f)}};
+    scene.shader = phongrast::Shader::phong;
+    return phongrast::render(scene).image;
 }
 
 std::string read_text(const std::filesystem::path& path) {
@@ -47,9 +100,10 @@ TEST_CASE("spot as OBJ + MTL and as obj2gltf's GLB: the same corners, texture co
         WARN("skipped: " << (assets / "spot.obj").string() << " or spot_texture.png not found");
         return;
     }
-    const std::string converter = obj2gltf_command();
+    std::string why;
+    const std::string converter = obj2gltf_command(why);
     if (converter.empty()) {
-        WARN("skipped: obj2gltf not found (npm install obj2gltf, then set PHONGRAST_OBJ2GLTF to its node_modules/.bin/obj2gltf)");
+        WARN("skipped: " << why << " (or set PHONGRAST_OBJ2GLTF to an obj2gltf command)");
         return;
     }
     TemporaryFolder folder;
@@ -128,4 +182,14 @@ TEST_CASE("spot as OBJ + MTL and as obj2gltf's GLB: the same corners, texture co
     CHECK(a.materials[0].texture->image->texels == b.materials[0].texture->image->texels);
     CHECK(b.materials[0].color_factor == glm::vec3(1.0f));
     CHECK(b.materials[0].texture->wrap_s == phongrast::TextureWrap::repeat);
+
+    // The same picture: textured, lit with the file's normals. Positions
+    // agree to float rounding, so at most a few silhouette pixels may differ.
+    const phongrast::Image from_obj = picture_of(a), from_glb = picture_of(b);
+    const phongrast::support::ImageAgreement agreement =
+        phongrast::support::agreement(from_obj, from_glb, phongrast::ImageSpec{}.background);
+    INFO(phongrast::support::summary(agreement));
+    CHECK(agreement.covered_in_both > agreement.pixels / 8);
+    CHECK(agreement.above_1 <= 3);
+    CHECK(agreement.only_in_first + agreement.only_in_second <= 3);
 }
