@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "phongrast/camera.hpp"
 #include "phongrast/io/dataset_files.hpp"
 
 namespace phongrast::cli {
@@ -72,12 +73,15 @@ struct BatchJob {
     std::string folder;       ///< the manifest's folder: an inline scene's "mesh" is relative to it
     ViewLayout layout = ViewLayout::turntable;  ///< mesh jobs only
     /// Images of the job: for a turntable, views per ring x rings; for a
-    /// sphere or hemisphere, the lattice's points.
+    /// sphere or hemisphere, the lattice's points; with "cameras", one per camera.
     int views = 1;
     /// Turntable: the rings' elevations in degrees above the horizontal, each
     /// in (-90, 90), ring by ring in this order; views / elevations.size()
     /// views per ring, 360 / that degrees apart.
     std::vector<double> elevations{0.0};
+    /// "cameras": view i's camera, exactly as given (no framing); empty: the
+    /// views of `layout`. The scene file's camera schema, checked as it is.
+    std::vector<Camera> cameras;
     JobSettings settings;     ///< the line's fields over the command line's
     std::vector<std::string> outputs;  ///< one per view, relative to the output folder
     io::DatasetFiles dataset_files;    ///< written next to each output (settings.dataset_files parsed)
