@@ -34,8 +34,9 @@
 // field (a typo would otherwise waste a whole cluster run; in a camera too,
 // where a scene file only warns) or two jobs writing the same image is an
 // io::FileError naming the manifest, the line and the field
-// ("jobs.jsonl:3: /cameras/2/world_to_camera: the 3x3 part is not a rotation ..."). Files the jobs name are only
-// read when the job runs: a missing or bad mesh fails that job alone.
+// ("jobs.jsonl:3: /cameras/2/world_to_camera: the 3x3 part is not a rotation
+// ..."). Files the jobs name are only read when the job runs: a missing or bad
+// mesh fails that job alone.
 #ifndef PHONGRAST_APPS_BATCH_MANIFEST_HPP
 #define PHONGRAST_APPS_BATCH_MANIFEST_HPP
 
