@@ -14,6 +14,7 @@
 #include "command_line.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
+#include "phongrast/io/scene_file.hpp"
 #include "phongrast/lighting.hpp"
 #include "phongrast/option_names.hpp"
 #include "phongrast/render.hpp"
@@ -41,6 +42,9 @@ public:
     LineReader(const std::string& name, int line, const json& object) : object_(object) {
         where_ = name + ":" + std::to_string(line);
     }
+
+    /// "manifest.jsonl:3", what every message starts with.
+    const std::string& where() const { return where_; }
 
     [[noreturn]] void fail(const std::string& field, const std::string& what) const {
         throw io::FileError(where_ + ": " + (field.empty() ? "" : "/" + field + ": ") + what);
@@ -80,7 +84,7 @@ public:
     void reject_unknown_fields() const {
         std::set<std::string> known = {"scene", "mesh", "views", "elevation", "elevations", "layout", "shader",
                                        "lighting", "size", "samples", "output", "aov_files", "depth_scale",
-                                       "camera_out", "transforms_out"};
+                                       "camera_out", "transforms_out", "cameras"};
         std::string named;  // the rendering options' names, from the library's table
         for (const NamedOption& option : named_options()) {
             known.insert(option.key);
@@ -88,7 +92,7 @@ public:
         }
         for (auto it = object_.begin(); it != object_.end(); ++it) {
             if (known.count(it.key()) == 0) {
-                fail(it.key(), "unknown field; expected scene, mesh, views, elevation, elevations, layout, shader, "
+                fail(it.key(), "unknown field; expected scene, mesh, views, elevation, elevations, layout, cameras, shader, "
                                "lighting, size, samples, aov_files, depth_scale, camera_out, transforms_out" + named +
                                " or output");
             }
@@ -164,10 +168,74 @@ double read_elevation(const LineReader& reader, const char* field, const json& v
     return value.get<double>();
 }
 
-// "layout", "views", "elevation" and "elevations" of a mesh job.
+// "cameras" of a mesh job: each element a camera object of the scene file's
+// schema, read by the scene file's own reader (io::parse_camera_object), but
+// strictly: a field the camera would ignore is an error here, as any unknown
+// manifest field is.
+void read_cameras(const LineReader& reader, const json& cameras, BatchJob& job) {
+    if (!cameras.is_array() || cameras.empty()) {
+        reader.fail("cameras", "expected a non-empty array of camera objects (docs/scene-format.md, Camera), got " +
+                                   describe(cameras));
+    }
+    if (cameras.size() > static_cast<std::size_t>(max_views)) {
+        reader.fail("cameras", std::to_string(cameras.size()) + " cameras; at most " + std::to_string(max_views) +
+                                   " per job");
+    }
+    for (std::size_t i = 0; i < cameras.size(); ++i) {
+        const std::string field = "cameras/" + std::to_string(i);
+        if (!cameras[i].is_object()) {
+            reader.fail(field, "expected a camera object (look-at: eye, lookat, up, focal, sensor; OpenCV: K and "
+                               "world_to_camera or camera_to_world; orthographic: projection, eye, lookat, up, "
+                               "sensor), got " + describe(cameras[i]));
+        }
+        // The element's own text: nlohmann writes numbers so that they read back exactly.
+        job.cameras.push_back(io::parse_camera_object(cameras[i].dump(), reader.where(), "/" + field,
+                                                      io::UnusedCameraFields::refuse, nullptr));
+    }
+    job.views = static_cast<int>(job.cameras.size());
+}
+
+// An OpenCV camera's K is in pixels of the image, so the job must say which
+// image ("size") and K's principal point must lie on it: a K made for
+// another resolution (1920x1080 rendered at 640x480) is caught here.
+void check_camera_pixels(const LineReader& reader, const BatchJob& job) {
+    for (std::size_t i = 0; i < job.cameras.size(); ++i) {
+        const Camera& camera = job.cameras[i];
+        if (camera.model != CameraModel::opencv) continue;
+        const std::string field = "cameras/" + std::to_string(i) + "/K";
+        if (job.settings.size.empty()) {
+            reader.fail(field, "an OpenCV camera's K is in pixels: give the image size it was made for, \"size\": "
+                               "\"WxH\" on the line (or --size)");
+        }
+        const auto [columns, rows] = parse_size(job.settings.size);  // checked by read_settings
+        const double cx = camera.opencv.cx, cy = camera.opencv.cy;
+        // OpenCV puts pixel centres at whole numbers: the image spans [-0.5, N - 0.5] x [-0.5, M - 0.5].
+        if (!(cx >= -0.5 && cx <= columns - 0.5 && cy >= -0.5 && cy <= rows - 0.5)) {
+            std::ostringstream what;
+            what << "the principal point (cx, cy) = (" << cx << ", " << cy << ") lies outside the "
+                 << job.settings.size << " image (\"size\"); K is in pixels of that image: was it made for another size?";
+            reader.fail(field, what.str());
+        }
+    }
+}
+
+// "layout", "views", "elevation" and "elevations" of a mesh job, or its "cameras".
 void read_views(const LineReader& reader, const json& object, BatchJob& job) {
     for (const char* field : {"views", "elevation", "elevations", "layout"}) {
         if (job.kind != JobKind::mesh && object.contains(field)) reader.fail(field, "only a \"mesh\" job has views");
+    }
+    if (const json* cameras = reader.find("cameras")) {
+        if (job.kind != JobKind::mesh) {
+            reader.fail("cameras", "only a \"mesh\" job has cameras (a scene has its own \"camera\")");
+        }
+        for (const char* field : {"views", "layout", "elevation", "elevations"}) {
+            if (object.contains(field)) {
+                reader.fail(field, "\"cameras\" gives every view's camera; expected either \"cameras\" or "
+                                   "views/layout/elevation(s), not both");
+            }
+        }
+        read_cameras(reader, *cameras, job);
+        return;
     }
     const std::string layout = reader.text("layout");
     if (layout == "sphere") {
@@ -280,16 +348,98 @@ void read_outputs(const LineReader& reader, BatchJob& job) {
     }
 }
 
+/// Follows a SAX parse of a line to the value it stopped at, for messages:
+/// the JSON pointer of that value ("/cameras/1/world_to_camera/0/3").
+class PathOfError : public nlohmann::json_sax<json> {
+public:
+    json::json_pointer pointer() const {
+        json::json_pointer result;
+        for (const Level& level : levels_) result = level.array ? result / level.index : result / level.key;
+        return result;
+    }
+    std::size_t position = 0;  ///< bytes read when the parse stopped
+    int error_id = 0;          ///< nlohmann's exception id (406: a number too large for a double)
+
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override { return open(false); }
+    bool key(string_t& key) override {
+        levels_.back().key = key;
+        return true;
+    }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(true); }
+    bool end_array() override { return close(); }
+    bool parse_error(std::size_t at, const std::string&, const nlohmann::detail::exception& error) override {
+        position = at;
+        error_id = error.id;
+        return false;
+    }
+
+private:
+    struct Level {
+        bool array = false;
+        std::size_t index = 0;  ///< array: the element being read
+        std::string key;        ///< object: the last key
+    };
+    std::vector<Level> levels_;
+
+    bool value() {
+        if (!levels_.empty() && levels_.back().array) ++levels_.back().index;
+        return true;
+    }
+    bool open(bool array) {
+        levels_.push_back({array, 0, ""});
+        return true;
+    }
+    bool close() {
+        levels_.pop_back();
+        return value();
+    }
+};
+
+/// The message for a line that is not JSON. NaN and Infinity (which Python's
+/// json.dumps writes for float('nan') and float('inf')) and numbers too large
+/// for a double name the field; other errors the byte.
+[[noreturn]] void malformed_line(const std::string& text, const std::string& name, int line,
+                                 const json::exception& error) {
+    PathOfError path;
+    json::sax_parse(text, &path);
+    // The literal around where the parse stopped.
+    const auto literal_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '+' || c == '-' || c == '.'; };
+    std::size_t start = std::min(path.position == 0 ? 0 : path.position - 1, text.size());
+    while (start > 0 && literal_char(text[start - 1])) --start;
+    std::size_t end = start;
+    while (end < text.size() && literal_char(text[end])) ++end;
+    const std::string literal = text.substr(start, end - start);
+    std::string word = literal.substr(literal.find_first_not_of("+-") == std::string::npos ? 0 : literal.find_first_not_of("+-"));
+    std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string where = name + ":" + std::to_string(line);
+    if (path.error_id == 406 || word == "nan" || word == "infinity" || word == "inf") {
+        const std::string pointer = path.pointer().to_string();
+        throw io::FileError(where + ": " + (pointer.empty() ? "/" : pointer) + ": expected a finite number, got " +
+                            literal + " (JSON has no NaN or Infinity; check the numbers the line was made from)");
+    }
+    const std::string detail = error.what();
+    const std::size_t colon = detail.find(": ");
+    const auto* parse_error = dynamic_cast<const json::parse_error*>(&error);
+    const std::size_t byte = parse_error != nullptr ? parse_error->byte : path.position;
+    throw io::FileError(where + ":" + std::to_string(byte) + ": malformed JSON: " +
+                        (colon == std::string::npos ? detail : detail.substr(colon + 2)));
+}
+
 BatchJob parse_line(const std::string& text, const std::string& name, int line, const std::string& folder,
                     const JobSettings& defaults) {
     json object;
     try {
         object = json::parse(text);
-    } catch (const json::parse_error& error) {
-        const std::string detail = error.what();
-        const std::size_t colon = detail.find(": ");
-        throw io::FileError(name + ":" + std::to_string(line) + ":" + std::to_string(error.byte) +
-                            ": malformed JSON: " + (colon == std::string::npos ? detail : detail.substr(colon + 2)));
+    } catch (const json::exception& error) {  // parse_error, or out_of_range for 1e999
+        malformed_line(text, name, line, error);
     }
     const LineReader reader(name, line, object);
     if (!object.is_object()) reader.fail("", "expected a JSON object (one job per line), got " + describe(object));
@@ -298,6 +448,7 @@ BatchJob parse_line(const std::string& text, const std::string& name, int line, 
     job.line = line;
     read_source(reader, object, folder, job);
     job.settings = read_settings(reader, defaults);
+    check_camera_pixels(reader, job);
     if (!job.settings.dataset_files.empty()) job.dataset_files = io::parse_dataset_files(job.settings.dataset_files);
     if (job.settings.depth_scale) job.dataset_options.depth_scale = *job.settings.depth_scale;
     read_outputs(reader, job);

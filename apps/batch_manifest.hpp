@@ -6,6 +6,8 @@
 //   {"mesh": "chair.obj", "views": 8, "elevations": [-15, 30]}  one turntable ring per elevation
 //   {"mesh": "chair.obj", "layout": "sphere", "views": 50}  views spread evenly over a sphere
 //   {"mesh": "chair.obj", "layout": "hemisphere", "views": 50}   ... over the upper half
+//   {"mesh": "cup.obj", "size": "640x480", "cameras": [{"eye": [...], "lookat": [...], "focal": 4, "sensor": [3, 4]},
+//                       {"K": [[...]], "world_to_camera": [[...]]}]}    one image per camera, exactly as given
 //   {"mesh": "cup.obj", "aov_files": "mask,depth16", "depth_scale": 0.0005}   files next to each image
 //   {"mesh": "cup.obj", "layout": "sphere", "views": 50, "output": "cup/{view}.png",
 //    "camera_out": "cup/cameras.json", "transforms_out": "cup/transforms.json"}   the views' cameras
@@ -20,11 +22,21 @@
 // EXR. Relative paths resolve against the manifest's folder (a scene file's
 // own "mesh" against the scene file's folder, as for `render`).
 //
-// Every line is checked before anything is rendered: a malformed line, a field
-// of the wrong type or value, an unknown field (a typo would otherwise waste a
-// whole cluster run) or two jobs writing the same image is an io::FileError
-// naming the manifest, the line and the field. Files the jobs name are only
-// read when the job runs: a missing or bad mesh fails that job alone.
+// "cameras" (mesh jobs only, instead of views/layout/elevation(s)) holds camera
+// objects of the scene file's "camera" schema (docs/scene-format.md),
+// read by the scene file's reader (io::parse_camera_object) and used exactly
+// as given, without framing, under the automatic framing's lights: a view is
+// `render mesh.obj` with that camera. An OpenCV K is in pixels, so its job
+// needs a "size" and K's principal point must lie on that image.
+//
+// Every line is checked before anything is rendered: a malformed line (NaN or
+// Infinity named by its field), a field of the wrong type or value, an unknown
+// field (a typo would otherwise waste a whole cluster run; in a camera too,
+// where a scene file only warns) or two jobs writing the same image is an
+// io::FileError naming the manifest, the line and the field
+// ("jobs.jsonl:3: /cameras/2/world_to_camera: the 3x3 part is not a rotation
+// ..."). Files the jobs name are only read when the job runs: a missing or bad
+// mesh fails that job alone.
 #ifndef PHONGRAST_APPS_BATCH_MANIFEST_HPP
 #define PHONGRAST_APPS_BATCH_MANIFEST_HPP
 
@@ -33,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "phongrast/camera.hpp"
 #include "phongrast/io/dataset_files.hpp"
 
 namespace phongrast::cli {
@@ -72,12 +85,15 @@ struct BatchJob {
     std::string folder;       ///< the manifest's folder: an inline scene's "mesh" is relative to it
     ViewLayout layout = ViewLayout::turntable;  ///< mesh jobs only
     /// Images of the job: for a turntable, views per ring x rings; for a
-    /// sphere or hemisphere, the lattice's points.
+    /// sphere or hemisphere, the lattice's points; with "cameras", one per camera.
     int views = 1;
     /// Turntable: the rings' elevations in degrees above the horizontal, each
     /// in (-90, 90), ring by ring in this order; views / elevations.size()
     /// views per ring, 360 / that degrees apart.
     std::vector<double> elevations{0.0};
+    /// "cameras": view i's camera, exactly as given (no framing); empty: the
+    /// views of `layout`. The scene file's camera schema, checked as it is.
+    std::vector<Camera> cameras;
     JobSettings settings;     ///< the line's fields over the command line's
     std::vector<std::string> outputs;  ///< one per view, relative to the output folder
     io::DatasetFiles dataset_files;    ///< written next to each output (settings.dataset_files parsed)

@@ -92,6 +92,11 @@ void make_views(const Scene& framed, const std::vector<ViewDirection>& direction
     }
 }
 
+void use_cameras(const Scene& framed, const std::vector<Camera>& cameras, JobScenes& scenes) {
+    scenes.cameras = cameras;
+    scenes.lights.assign(cameras.size(), framed.lights);
+}
+
 void make_turntable(const Scene& framed, int views, double elevation_degrees, JobScenes& scenes) {
     make_views(framed, turntable_directions(views, {elevation_degrees}), scenes);
 }
@@ -134,7 +139,9 @@ JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes) {
     } else {
         scenes.prepared = prepare_scene(flags, silent);
     }
-    if (job.kind == JobKind::mesh) {
+    if (job.kind == JobKind::mesh && !job.cameras.empty()) {
+        use_cameras(scenes.prepared.scene, job.cameras, scenes);
+    } else if (job.kind == JobKind::mesh) {
         make_views(scenes.prepared.scene, job_directions(job), scenes);
     } else {
         scenes.cameras.assign(1, scenes.prepared.scene.camera);

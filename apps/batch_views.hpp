@@ -1,6 +1,7 @@
 // From a manifest line to the scenes it renders: the scene (file or inline)
-// prepared exactly as `phongrast render` prepares it, or the automatically
-// framed mesh turned around its vertical axis for a turntable.
+// prepared exactly as `phongrast render` prepares it, the automatically
+// framed mesh seen from generated views (turntable, sphere), or the framed
+// mesh seen by the line's own cameras.
 #ifndef PHONGRAST_APPS_BATCH_VIEWS_HPP
 #define PHONGRAST_APPS_BATCH_VIEWS_HPP
 
@@ -66,6 +67,13 @@ std::vector<ViewDirection> lattice_directions(int views, bool upper_half_only);
 /// keeps its size on screen. A single direction of (0, 0) is exactly the
 /// framing of `phongrast render mesh.obj`.
 void make_views(const Scene& framed, const std::vector<ViewDirection>& directions, JobScenes& scenes);
+
+/// The views of a job's explicit "cameras": each camera exactly as given
+/// (no framing, no sensor fitted: world units of the mesh file, K in pixels
+/// of the image), under the automatic framing's lights, which stay where the
+/// framing put them. So a view is exactly `phongrast render mesh.obj` with
+/// that camera (--camera FILE, or --K and --world-to-camera).
+void use_cameras(const Scene& framed, const std::vector<Camera>& cameras, JobScenes& scenes);
 
 /// A turntable of `views` views at one elevation (degrees): make_views of
 /// turntable_directions(views, {elevation_degrees}).

@@ -133,3 +133,40 @@ TEST_CASE("a 3x4 pose ([R | t] without the last row) is accepted") {
         "s.json", "");
     CHECK(file.scene.camera.opencv.world_to_camera[2][3] == 3.0);
 }
+
+TEST_CASE("parse_camera_object reads one camera as a scene file's, messages under the given JSON pointer") {
+    using phongrast::io::parse_camera_object;
+    using phongrast::io::UnusedCameraFields;
+    const std::string camera = "{" + std::string(K_text) + ", " + world_to_camera_text + "}";
+    const phongrast::Camera from_scene = parse_scene_json(scene_with_camera(std::string(K_text) + ", " + world_to_camera_text),
+                                                          "s.json", "").scene.camera;
+    const phongrast::Camera alone = parse_camera_object(camera, "jobs.jsonl:3", "/cameras/2", UnusedCameraFields::refuse, nullptr);
+    CHECK(alone.model == phongrast::CameraModel::opencv);
+    CHECK(alone.opencv.world_to_camera == from_scene.opencv.world_to_camera);
+    CHECK(alone.opencv.K() == from_scene.opencv.K());
+    // The scene reader's messages, under the pointer given.
+    CHECK_THROWS_WITH(parse_camera_object(R"({"K": [[0, 0, 31.5], [0, 400, 23.5], [0, 0, 1]], )" +
+                                              std::string(world_to_camera_text) + "}",
+                                          "jobs.jsonl:3", "/cameras/2", UnusedCameraFields::refuse, nullptr),
+                      "jobs.jsonl:3: /cameras/2/K/0/0: expected fx, a positive number, got 0");
+    CHECK_THROWS_WITH(parse_camera_object("[1]", "c.json", "", UnusedCameraFields::warn, nullptr),
+                      "c.json: /: expected an object, got an array of 1");
+    CHECK_THROWS_WITH(parse_camera_object(R"({"eye": [1, 2, 3], "lookat": [1, 2, 3], "focal": 1, "sensor": [1, 1]})",
+                                          "c.json", "/cam", UnusedCameraFields::warn, nullptr),
+                      "c.json: /cam/lookat: must differ from camera.eye");
+    CHECK_THROWS_AS(parse_camera_object(camera, "c.json", "cameras", UnusedCameraFields::warn, nullptr),
+                    std::invalid_argument);  // not a JSON pointer: a caller's mistake
+    // Unused fields: warnings, as in a scene file, or errors when refused.
+    const std::string extra = R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "focal": 1, "sensor": [1, 1], "fov": 40})";
+    std::vector<std::string> warnings;
+    CHECK(parse_camera_object(extra, "c.json", "/cameras/0", UnusedCameraFields::warn, &warnings).focal == 1.0);
+    CHECK(warnings == std::vector<std::string>{"c.json: ignoring unknown field /cameras/0/fov"});
+    CHECK_THROWS_WITH(parse_camera_object(extra, "c.json", "/cameras/0", UnusedCameraFields::refuse, nullptr),
+                      Contains("c.json: /cameras/0/fov: unknown field"));
+    const std::string both = "{\"eye\": [0, 0, 5], " + std::string(K_text) + ", " + world_to_camera_text + "}";
+    warnings.clear();
+    CHECK(parse_camera_object(both, "c.json", "", UnusedCameraFields::warn, &warnings).model == phongrast::CameraModel::opencv);
+    CHECK(warnings.size() == 1);
+    CHECK_THROWS_WITH(parse_camera_object(both, "c.json", "", UnusedCameraFields::refuse, nullptr),
+                      Contains("c.json: /eye: an OpenCV camera (K) is placed by its matrices"));
+}

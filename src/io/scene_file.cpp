@@ -249,13 +249,25 @@ constexpr const char* kCameraExpected =
     "an object: eye, lookat, up, focal, sensor (look-at); K and world_to_camera or camera_to_world (OpenCV); "
     "projection \"orthographic\", eye, lookat, up, sensor";
 
-/// The camera object at `camera_at`, into `out`.
+/// The camera object at `camera_at`, into `out`. Fields the camera does not
+/// use (unknown ones, the look-at fields beside K, an orthographic camera's
+/// focal) are warnings, or errors naming the field when `unused` says so.
 void read_camera_object(const SceneReader& reader, const json& camera_value, const json::json_pointer& camera_at,
-                        Camera& out, std::vector<std::string>& warnings) {
+                        Camera& out, std::vector<std::string>& warnings,
+                        UnusedCameraFields unused = UnusedCameraFields::warn) {
     const json& camera = reader.require_object(camera_value, camera_at);
-    reader.warn_unknown(camera, camera_at,
-                        {"eye", "lookat", "up", "focal", "sensor", "K", "world_to_camera", "camera_to_world", "projection"},
-                        &warnings);
+    const std::set<std::string> known = {"eye",     "lookat", "up", "focal", "sensor", "K", "world_to_camera",
+                                         "camera_to_world", "projection"};
+    const bool refuse = unused == UnusedCameraFields::refuse;
+    if (refuse) {
+        for (auto it = camera.begin(); it != camera.end(); ++it) {
+            if (known.count(it.key()) == 0) {
+                reader.fail(camera_at / it.key(), "unknown field; a camera has eye, lookat, up, focal, sensor, K, "
+                                                  "world_to_camera, camera_to_world or projection");
+            }
+        }
+    }
+    reader.warn_unknown(camera, camera_at, known, &warnings);
     bool orthographic = false;
     if (const json* projection = reader.optional_field(camera, camera_at, "projection")) {
         const std::string name = reader.string(*projection, camera_at / "projection");
@@ -268,11 +280,14 @@ void read_camera_object(const SceneReader& reader, const json& camera_value, con
         if (orthographic) reader.fail(camera_at / "projection", "an OpenCV camera (K) is a perspective camera, not orthographic");
         read_opencv_camera(reader, camera, camera_at, *K, out);
         // A file may also carry the look-at form (--camera-out writes both): the matrices win.
-        for (const char* unused : {"eye", "lookat", "up", "focal", "sensor"}) {
-            if (camera.contains(unused)) {
-                warnings.push_back(reader_name(reader) + ": ignoring " + (camera_at / unused).to_string() +
-                                          ": an OpenCV camera (K) is placed by its matrices");
+        for (const char* ignored : {"eye", "lookat", "up", "focal", "sensor"}) {
+            if (!camera.contains(ignored)) continue;
+            if (refuse) {
+                reader.fail(camera_at / ignored, "an OpenCV camera (K) is placed by its matrices; give K with "
+                                                 "world_to_camera or camera_to_world, or the look-at fields, not both");
             }
+            warnings.push_back(reader_name(reader) + ": ignoring " + (camera_at / ignored).to_string() +
+                               ": an OpenCV camera (K) is placed by its matrices");
         }
         return;
     }
@@ -287,6 +302,7 @@ void read_camera_object(const SceneReader& reader, const json& camera_value, con
     }
     if (orthographic) {
         if (camera.contains("focal")) {
+            if (refuse) reader.fail(camera_at / "focal", "an orthographic camera has no focal length; leave it out");
             warnings.push_back(reader_name(reader) + ": ignoring " + (camera_at / "focal").to_string() +
                                       ": an orthographic camera has no focal length");
         }
@@ -604,6 +620,34 @@ Camera parse_camera_json(const std::string& text, const std::string& name, std::
         make_camera_frame(camera, 1, 1);  // the geometric conditions (eye == lookat, up parallel to the view)
     } catch (const std::invalid_argument& error) {
         throw FileError(name + ": " + error.what());
+    }
+    if (warnings != nullptr) warnings->insert(warnings->end(), found.begin(), found.end());
+    return camera;
+}
+
+Camera parse_camera_object(const std::string& text, const std::string& name, const std::string& where,
+                          UnusedCameraFields unused, std::vector<std::string>* warnings) {
+    json::json_pointer camera_at;
+    try {
+        camera_at = json::json_pointer(where);
+    } catch (const json::exception&) {
+        throw std::invalid_argument("parse_camera_object: '" + where + "' is not a JSON pointer (\"\" or \"/a/0\")");
+    }
+    const json document = parse_or_explain(text, name);
+    const SceneReader reader(name);
+    std::vector<std::string> found;
+    Camera camera;
+    read_camera_object(reader, document, camera_at, camera, found, unused);
+    try {
+        make_camera_frame(camera, 1, 1);  // the geometric conditions (eye == lookat, up parallel to the view)
+    } catch (const std::invalid_argument& error) {
+        // "camera.up: must not be ..." names the field: as a pointer below `where`.
+        const std::string what = error.what();
+        const std::size_t colon = what.find(": ");
+        if (what.rfind("camera.", 0) == 0 && colon != std::string::npos) {
+            reader.fail(camera_at / what.substr(7, colon - 7), what.substr(colon + 2));
+        }
+        reader.fail(camera_at, what);
     }
     if (warnings != nullptr) warnings->insert(warnings->end(), found.begin(), found.end());
     return camera;

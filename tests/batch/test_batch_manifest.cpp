@@ -4,6 +4,7 @@
 
 #include "batch_manifest.hpp"
 #include "phongrast/io/error.hpp"
+#include "phongrast/io/scene_file.hpp"
 #include "phongrast/option_names.hpp"
 
 using namespace phongrast::cli;
@@ -174,4 +175,152 @@ TEST_CASE("two jobs (or two views of one) writing the same image are an error na
     CHECK_THAT(error_of("{\"mesh\": \"a.obj\", \"views\": 3, \"output\": \"a.png\"}"),
                Catch::Contains("also written by line 1 (add {view} to the pattern)"));
     CHECK_NOTHROW(parse("{\"mesh\": \"a.obj\"}\n{\"mesh\": \"a.obj\", \"shader\": \"flat\", \"output\": \"a-flat.png\"}"));
+}
+
+namespace {
+
+// Cameras in the scene file's schema, as manifest lines write them.
+const char* const look_at_camera = R"({"eye": [0, 3, 12], "lookat": [0, 0, 0], "up": [0, 1, 0], "focal": 4, "sensor": [6, 8]})";
+const char* const opencv_camera =
+    R"({"K": [[40, 0, 31.5], [0, 41.25, 23.5], [0, 0, 1]], "world_to_camera": [[1, 0, 0, 0.25], [0, -1, 0, 0.5], [0, 0, -1, 10], [0, 0, 0, 1]]})";
+const char* const orthographic_camera =
+    R"({"projection": "orthographic", "eye": [5, 0, 0], "lookat": [0, 0, 0], "sensor": [4, 4]})";
+
+/// A mesh job of size 64x48 with `cameras` (the array's text) and `extra` fields.
+std::string camera_line(const std::string& cameras, const std::string& extra = "") {
+    return "{\"mesh\": \"a.obj\", \"size\": \"64x48\", \"cameras\": " + cameras + extra + "}";
+}
+
+}  // namespace
+
+TEST_CASE("a mesh job's cameras: one view per camera, each exactly as given, numbered as generated views") {
+    const std::string cameras = std::string("[") + look_at_camera + ", " + opencv_camera + ", " + orthographic_camera + "]";
+    const Manifest manifest = parse(camera_line(cameras) + "\n" + camera_line(std::string("[") + look_at_camera + "]"));
+    REQUIRE(manifest.jobs.size() == 2);
+    const BatchJob& job = manifest.jobs[0];
+    CHECK(job.kind == JobKind::mesh);
+    CHECK(job.views == 3);
+    REQUIRE(job.cameras.size() == 3);
+    CHECK(job.outputs == std::vector<std::string>{"a-0.png", "a-1.png", "a-2.png"});
+    using phongrast::CameraModel;
+    const phongrast::Camera& look_at = job.cameras[0];
+    CHECK(look_at.model == CameraModel::look_at);
+    CHECK(look_at.eye == glm::dvec3(0.0, 3.0, 12.0));
+    CHECK(look_at.focal == 4.0);
+    CHECK(look_at.sensor_height == 6.0);
+    CHECK(look_at.sensor_width == 8.0);
+    const phongrast::Camera& opencv = job.cameras[1];
+    CHECK(opencv.model == CameraModel::opencv);
+    CHECK(opencv.opencv.fx == 40.0);
+    CHECK(opencv.opencv.fy == 41.25);
+    CHECK(opencv.opencv.cx == 31.5);
+    CHECK(opencv.opencv.cy == 23.5);
+    CHECK(opencv.opencv.world_to_camera[0][3] == 0.25);
+    CHECK(opencv.opencv.world_to_camera[1][1] == -1.0);
+    CHECK(opencv.opencv.world_to_camera[2][3] == 10.0);
+    CHECK(job.cameras[2].model == CameraModel::orthographic);
+    CHECK(job.cameras[2].eye == glm::dvec3(5.0, 0.0, 0.0));
+    // The scene file's own reader gives the same cameras.
+    for (std::size_t i = 0; i < 3; ++i) {
+        const char* text = i == 0 ? look_at_camera : i == 1 ? opencv_camera : orthographic_camera;
+        const phongrast::Camera scene = phongrast::io::parse_camera_json(text, "camera.json", nullptr);
+        CHECK(scene.model == job.cameras[i].model);
+        CHECK(scene.eye == job.cameras[i].eye);
+        CHECK(scene.opencv.world_to_camera == job.cameras[i].opencv.world_to_camera);
+        CHECK(scene.opencv.fx == job.cameras[i].opencv.fx);
+    }
+    // One camera: one view, named as a single view is.
+    CHECK(manifest.jobs[1].views == 1);
+    CHECK(manifest.jobs[1].outputs == std::vector<std::string>{"a.png"});
+}
+
+TEST_CASE("cameras: camera_to_world, an inline pose of 3 rows and the command line's size are accepted") {
+    const std::string camera_to_world =
+        R"({"K": [[40, 0, 31.5], [0, 40, 23.5], [0, 0, 1]], "camera_to_world": [[1, 0, 0, 0], [0, -1, 0, 0], [0, 0, -1, 10]]})";
+    JobSettings defaults;
+    defaults.size = "64x48";
+    const Manifest manifest = parse("{\"mesh\": \"a.obj\", \"cameras\": [" + camera_to_world + "]}", defaults);
+    REQUIRE(manifest.jobs.at(0).cameras.size() == 1);
+    const phongrast::Matrix3x4& pose = manifest.jobs[0].cameras[0].opencv.world_to_camera;
+    CHECK(pose[0][0] == 1.0);
+    CHECK(pose[1][1] == -1.0);
+    CHECK(pose[2][2] == -1.0);
+    CHECK(pose[2][3] == 10.0);  // t = -R c: R = diag(1, -1, -1), c = (0, 0, 10)
+}
+
+TEST_CASE("bad cameras stop the batch with a message naming the line and the field") {
+    const std::string good = look_at_camera;
+    const auto opencv_with = [](const std::string& K, const std::string& pose) {
+        return "[" + std::string(look_at_camera) + ", {\"K\": " + K + ", \"world_to_camera\": " + pose + "}]";
+    };
+    const std::string K = "[[40, 0, 31.5], [0, 40, 23.5], [0, 0, 1]]";
+    const std::string pose = "[[1, 0, 0, 0], [0, -1, 0, 0], [0, 0, -1, 10], [0, 0, 0, 1]]";
+    // Shape.
+    CHECK_THAT(error_of("{\"mesh\": \"a.obj\"}\n" + camera_line("{}")),
+               Catch::StartsWith("m.jsonl:2: /cameras: expected a non-empty array of camera objects"));
+    CHECK_THAT(error_of(camera_line("[]")), Catch::StartsWith("m.jsonl:1: /cameras: expected a non-empty array"));
+    CHECK_THAT(error_of(camera_line("[" + good + ", 3]")),
+               Catch::StartsWith("m.jsonl:1: /cameras/1: expected a camera object (look-at: eye, lookat"));
+    CHECK_THAT(error_of(camera_line("[" + good + ", [1, 2]]")), Catch::Contains("/cameras/1: expected a camera object"));
+    // K with a non-positive focal length.
+    CHECK_THAT(error_of(camera_line(opencv_with("[[0, 0, 31.5], [0, 40, 23.5], [0, 0, 1]]", pose))),
+               Catch::StartsWith("m.jsonl:1: /cameras/1/K/0/0: expected fx, a positive number, got 0"));
+    CHECK_THAT(error_of(camera_line(opencv_with("[[40, 0, 31.5], [0, -40, 23.5], [0, 0, 1]]", pose))),
+               Catch::StartsWith("m.jsonl:1: /cameras/1/K/1/1: expected fy, a positive number, got -40"));
+    // A pose with NaN or Infinity (what Python's json.dumps writes for them), or too large a number.
+    CHECK(error_of(camera_line(opencv_with(K, "[[1, 0, 0, NaN], [0, -1, 0, 0], [0, 0, -1, 10], [0, 0, 0, 1]]"))) ==
+          "m.jsonl:1: /cameras/1/world_to_camera/0/3: expected a finite number, got NaN (JSON has no NaN or Infinity; "
+          "check the numbers the line was made from)");
+    CHECK_THAT(error_of(camera_line(opencv_with(K, "[[1, 0, 0, 0], [0, -1, 0, -Infinity], [0, 0, -1, 10], [0, 0, 0, 1]]"))),
+               Catch::StartsWith("m.jsonl:1: /cameras/1/world_to_camera/1/3: expected a finite number, got -Infinity"));
+    CHECK_THAT(error_of(camera_line(opencv_with(K, "[[1, 0, 0, 0], [0, -1, 0, 0], [0, 0, -1, 1e999], [0, 0, 0, 1]]"))),
+               Catch::StartsWith("m.jsonl:1: /cameras/1/world_to_camera/2/3: expected a finite number, got 1e999"));
+    // A pose that is not a rotation (scaled, then mirrored).
+    CHECK_THAT(error_of(camera_line(opencv_with(K, "[[2, 0, 0, 0], [0, -1, 0, 0], [0, 0, -1, 10], [0, 0, 0, 1]]"))),
+               Catch::StartsWith("m.jsonl:1: /cameras/1/world_to_camera: the 3x3 part is not a rotation"));
+    CHECK_THAT(error_of(camera_line(opencv_with(K, "[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 10], [0, 0, 0, 1]]"))),
+               Catch::StartsWith("m.jsonl:1: /cameras/1/world_to_camera: the 3x3 part has determinant -1"));
+    CHECK_THAT(error_of(camera_line(R"([{"K": )" + K + "}]")),
+               Catch::StartsWith("m.jsonl:1: /cameras/0/world_to_camera: missing required field"));
+    // Unknown fields, and fields the camera would ignore: a manifest refuses them.
+    CHECK_THAT(error_of(camera_line(R"([{"eye": [0, 0, 5], "lookat": [0, 0, 0], "focal": 1, "sensor": [1, 1], "fov": 40}])")),
+               Catch::StartsWith("m.jsonl:1: /cameras/0/fov: unknown field; a camera has eye, lookat"));
+    CHECK_THAT(error_of(camera_line(R"([{"eye": [0, 0, 5], "K": )" + K + ", \"world_to_camera\": " + pose + "}]")),
+               Catch::StartsWith("m.jsonl:1: /cameras/0/eye: an OpenCV camera (K) is placed by its matrices"));
+    CHECK_THAT(error_of(camera_line(R"([{"projection": "orthographic", "eye": [0, 0, 5], "lookat": [0, 0, 0], "focal": 2, "sensor": [1, 1]}])")),
+               Catch::StartsWith("m.jsonl:1: /cameras/0/focal: an orthographic camera has no focal length"));
+    // The camera's geometry, named by its field.
+    CHECK_THAT(error_of(camera_line(R"([{"eye": [0, 0, 5], "lookat": [0, 0, 5], "focal": 1, "sensor": [1, 1]}])")),
+               Catch::StartsWith("m.jsonl:1: /cameras/0/lookat: must differ from camera.eye"));
+    CHECK_THAT(error_of(camera_line(R"([{"eye": [0, 5, 0], "lookat": [0, 0, 0], "focal": 1, "sensor": [1, 1]}])")),
+               Catch::StartsWith("m.jsonl:1: /cameras/0/up: must not be parallel to the view direction"));
+    CHECK_THAT(error_of(camera_line(R"([{"eye": [0, 0, 5], "lookat": [0, 0, 0], "focal": -1, "sensor": [1, 1]}])")),
+               Catch::StartsWith("m.jsonl:1: /cameras/0/focal: expected a positive number, got -1"));
+}
+
+TEST_CASE("cameras exclude generated views, belong to mesh jobs, and an OpenCV K needs the job's size") {
+    const std::string cameras = std::string("[") + look_at_camera + "]";
+    for (const char* field : {"\"views\": 2", "\"layout\": \"sphere\"", "\"elevation\": 10", "\"elevations\": [10]"}) {
+        INFO(field);
+        CHECK_THAT(error_of(camera_line(cameras, std::string(", ") + field)),
+                   Catch::Matches("m\\.jsonl:1: /(views|layout|elevation|elevations): \"cameras\" gives every view's "
+                                  "camera; expected either \"cameras\" or views/layout/elevation\\(s\\), not both"));
+    }
+    CHECK_THAT(error_of("{\"scene\": \"s.json\", \"cameras\": " + cameras + "}"),
+               Catch::StartsWith("m.jsonl:1: /cameras: only a \"mesh\" job has cameras"));
+    // K is in pixels: without a size there is nothing to check it against.
+    CHECK_THAT(error_of(std::string("{\"mesh\": \"a.obj\", \"cameras\": [") + opencv_camera + "]}"),
+               Catch::StartsWith("m.jsonl:1: /cameras/0/K: an OpenCV camera's K is in pixels: give the image size"));
+    CHECK_NOTHROW(parse(std::string("{\"mesh\": \"a.obj\", \"cameras\": [") + look_at_camera + "]}"));  // world units only
+    // A principal point off the image: a K made for another size.
+    const std::string big_K =
+        R"([{"K": [[1000, 0, 959.5], [0, 1000, 539.5], [0, 0, 1]], "world_to_camera": [[1, 0, 0, 0], [0, -1, 0, 0], [0, 0, -1, 10]]}])";
+    CHECK(error_of(camera_line(big_K)) ==
+          "m.jsonl:1: /cameras/0/K: the principal point (cx, cy) = (959.5, 539.5) lies outside the 64x48 image "
+          "(\"size\"); K is in pixels of that image: was it made for another size?");
+    CHECK_NOTHROW(parse("{\"mesh\": \"a.obj\", \"size\": \"1920x1080\", \"cameras\": " + big_K + "}"));
+    // The edges of the image in OpenCV's pixel coordinates (centres at whole numbers) are on it.
+    const std::string edge_K =
+        R"([{"K": [[10, 0, -0.5], [0, 10, 47.5], [0, 0, 1]], "world_to_camera": [[1, 0, 0, 0], [0, -1, 0, 0], [0, 0, -1, 10]]}])";
+    CHECK_NOTHROW(parse(camera_line(edge_K)));
 }

@@ -74,6 +74,26 @@ SceneFile parse_scene_json(const std::string& text, const std::string& name,
 /// pointer; `warnings` gets the camera's ignored fields.
 Camera parse_camera_json(const std::string& text, const std::string& name, std::vector<std::string>* warnings);
 
+/// What a camera object's fields that the camera does not use become:
+/// unknown fields, the look-at fields beside "K" (the matrices place an
+/// OpenCV camera), an orthographic camera's "focal".
+enum class UnusedCameraFields {
+    warn,    ///< a warning each, as a scene file has them (the contract)
+    refuse,  ///< an error naming the field (a batch manifest: a typo must not pass)
+};
+
+/// One camera object (JSON text) in exactly the scene file's "camera" schema
+/// (any of the contract's three forms), read by the scene file's own reader.
+/// `where` is the object's JSON pointer in the document it came from
+/// ("/cameras/2", or "" for the root): every message is
+/// "NAME: WHERE/FIELD: what" ("jobs.jsonl:3: /cameras/2/K/0/0: expected fx,
+/// a positive number, got -5"). Throws FileError for a bad camera (wrong
+/// shape, non-finite numbers, K with fx or fy <= 0, a pose that is not a
+/// rotation, eye == lookat, up parallel to the view), std::invalid_argument
+/// for a `where` that is not a JSON pointer. Warnings go into `warnings`.
+Camera parse_camera_object(const std::string& text, const std::string& name, const std::string& where,
+                          UnusedCameraFields unused, std::vector<std::string>* warnings);
+
 /// parse_camera_json of a file's contents.
 Camera read_camera_file(const std::string& path, std::vector<std::string>* warnings);
 
