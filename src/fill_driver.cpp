@@ -6,11 +6,24 @@
 #include <tbb/parallel_for.h>
 
 #include "prefetch.hpp"
+#include "resize_polling.hpp"
 #include "term_counts.hpp"
 #include "view.hpp"
 
 namespace phongrast::detail {
 namespace {
+
+/// A band can hold hundreds of thousands of draws (a large mesh, or
+/// supersampling's tall bands), far more than 20 ms of work: every this many
+/// draws the calling thread reports progress (so Ctrl-C in Python is seen)
+/// and every thread looks for a cancel, instead of only between bands.
+constexpr std::uint32_t kDrawsBetweenPolls = 256;
+
+bool stop_requested(ProgressMonitor& progress) {
+    if (!progress.enabled()) return false;
+    progress.poll();
+    return progress.cancelled();
+}
 
 /// Overdraw::automatic picks shade_visible only for per-sample lighting:
 /// there shading a sample costs several times the second coverage pass,
@@ -37,12 +50,13 @@ bool overdraw_shades_visible_only(const Scene& scene, const RenderOptions& optio
 template <typename Real>
 std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const DrawTriangle<Real>* const* draws,
                                  std::uint32_t count, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
-                                 VisibleLayer& layer) {
+                                 VisibleLayer& layer, ProgressMonitor& progress) {
     const std::size_t samples = static_cast<std::size_t>(target.row_end - target.row_begin) *
                                 static_cast<std::size_t>(target.image.columns);
     layer.owner.assign(samples, kNoOwner);
     std::uint64_t covered = 0;
     for (std::uint32_t i = 0; i < count; ++i) {
+        if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return covered;
         if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
         covered += record_owner(*draws[i], target, i, layer.owner.data());
     }
@@ -52,6 +66,7 @@ std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const DrawTriangle<
     }
     target.owner = layer.owner.data();
     for (std::uint32_t i = 0; i < count; ++i) {
+        if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return covered;
         if (!layer.shown[i]) continue;  // entirely painted over: no shading at all
         target.self = i;
         plan.kernel(*draws[i], target, vectors, plan.setup);
@@ -63,8 +78,9 @@ std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const DrawTriangle<
 /// sample it covers. Returns the samples covered.
 template <typename Real>
 std::uint64_t fill_every_layer(const FillPlan<Real>& plan, const DrawTriangle<Real>* const* draws, std::uint32_t count,
-                      FillTarget<Real>& target, LightVectorsAt<Real>& vectors) {
+                      FillTarget<Real>& target, LightVectorsAt<Real>& vectors, ProgressMonitor& progress) {
     for (std::uint32_t i = 0; i < count; ++i) {
+        if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return target.covered;
         if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
         plan.kernel(*draws[i], target, vectors, plan.setup);
     }
@@ -127,7 +143,8 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
     image.rows = rows;
     image.columns = columns;
     // Cleared band by band, in parallel, below: resizing writes only what a larger image adds.
-    image.pixels.resize(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns));
+    resize_polling(image.pixels, static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns),
+                   [&progress] { progress.poll(); });
     prepare_memory(plan, bins.bands, image.pixels.size(), memory);
     tbb::parallel_for(0, bins.bands, [&](int band) {
         if (progress.cancelled()) return;
@@ -140,8 +157,8 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
         memory.covered[band] =
             plan.shade_visible_only
                 ? fill_visible_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors,
-                                     memory.band_layers[band])
-                : fill_every_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors);
+                                     memory.band_layers[band], progress)
+                : fill_every_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors, progress);
         memory.shaded[band] = target.samples;
         memory.replaced[band] = target.replaced;
         progress.piece_done();

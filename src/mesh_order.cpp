@@ -216,6 +216,10 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
             order.vertex_target.clear();
             order.vertex_source.clear();
         } else {
+            // Forgotten first: a cancel inside compute_mesh_order (RenderCancelled from
+            // `poll`) leaves half-written permutations that must not pass for this mesh's.
+            order.positions_data = nullptr;
+            order.triangles_data = nullptr;
             compute_mesh_order(mesh, order, poll);
         }
         order.positions_data = mesh.positions.data();

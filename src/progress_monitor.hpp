@@ -21,7 +21,15 @@ public:
     /// The monitor keeps a reference to it: `callback` must outlive the monitor (not a temporary).
     explicit ProgressMonitor(const ProgressCallback& callback)
         : callback_(callback), caller_(std::this_thread::get_id()), last_report_(std::chrono::steady_clock::now()) {
-        if (enabled()) poll_ = [this] { poll(); };  // small enough for std::function's own storage: no allocation
+        // poll() and, once a report asked to stop, RenderCancelled: the serial
+        // and library-bound stages that call it (mesh order, normals, the sort,
+        // binning) stop at their next poll instead of running to their end,
+        // which took up to a second under load and kept Ctrl-C waiting.
+        // Small enough for std::function's own storage: no allocation.
+        if (enabled()) poll_ = [this] {
+            poll();
+            throw_if_cancelled();
+        };
     }
     explicit ProgressMonitor(ProgressCallback&&) = delete;  // a temporary would die before the monitor
     ProgressMonitor(const ProgressMonitor&) = delete;
@@ -66,7 +74,9 @@ public:
     }
 
     /// poll() as a function for loops outside the pipeline (normals, the
-    /// painter's sort); empty without a callback, so they skip even the call.
+    /// painter's sort), which also throws RenderCancelled once cancelled (on
+    /// any thread: inside a parallel loop oneTBB carries it to the caller);
+    /// empty without a callback, so they skip even the call.
     const std::function<void()>& poll_function() const { return poll_; }
 
     /// Between stages, on the calling thread: throws RenderCancelled if a report asked to stop.

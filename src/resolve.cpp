@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <tbb/parallel_for.h>
+
 namespace phongrast::detail {
 namespace {
 
@@ -72,7 +74,10 @@ glm::dvec2 rotated_grid_offset(int i, int j, int s) {
 void box_downsample(const Image& samples, int factor, int rows, int columns, Image& pixels) {
     resize_like(pixels, rows, columns);
     const float weight = 1.0f / static_cast<float>(factor * factor);
-    for (int row = 0; row < rows; ++row) {
+    // Rows in parallel (each pixel's sum is the same as on one thread): on
+    // one thread a 2048² sample image took 10 ms, and 150 ms under load,
+    // after the fill's last progress report.
+    tbb::parallel_for(0, rows, [&](int row) {
         for (int column = 0; column < columns; ++column) {
             glm::vec3 sum(0.0f);
             for (int dy = 0; dy < factor; ++dy) {
@@ -80,7 +85,7 @@ void box_downsample(const Image& samples, int factor, int rows, int columns, Ima
             }
             pixels.at(row, column) = sum * weight;
         }
-    }
+    });
 }
 
 }  // namespace phongrast::detail

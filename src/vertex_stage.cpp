@@ -2,6 +2,7 @@
 
 #include "fill_types.hpp"
 #include "normalize_lanes.hpp"
+#include "resize_polling.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -73,8 +74,9 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
         if (fill_in) keep_given_normals(mesh.normals, memory.normals);
     }
     const std::vector<glm::vec3>& normals = mesh.normals.empty() || fill_in ? memory.normals : mesh.normals;
-    out.screen.resize(count);
-    out.varyings.resize(count);
+    const auto poll = [&progress] { progress.poll(); };
+    resize_polling(out.screen, count, poll);
+    resize_polling(out.varyings, count, poll);
     const CameraFrame& frame = view.frame;
     progress.begin_stage(0.05, 0.1, (count + kTransformBlock - 1) / kTransformBlock);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kTransformBlock),

@@ -5,6 +5,7 @@
 // never draws a mesh edited in place from a stale copy.
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <numeric>
 #include <random>
 #include <string>
@@ -307,4 +308,33 @@ TEST_CASE("the permutation is computed once per mesh, again for another mesh") {
     culling.back_faces = BackFaces::cull_when_hidden;
     CHECK(&detail::scene_in_render_order(scene, culling, false, order) == &scene);
     CHECK(order.original_triangles() == nullptr);
+}
+
+TEST_CASE("a cancel inside the mesh order stops it there and leaves no half-made permutation") {
+    // A Renderer's poll throws RenderCancelled once a report asked to stop
+    // (progress_monitor.hpp); here a poll that throws at its second call.
+    ReorderThreshold always(0);
+    const Scene first = sphere_scene(shuffled_faces(test_meshes::icosphere(11, 0.08), 14));
+    const Scene second = sphere_scene(shuffled_faces(test_meshes::icosphere(11, 0.08), 15));
+    const RenderOptions options = RenderOptions::exact();
+    detail::MeshOrder order;
+    detail::scene_in_render_order(first, options, false, order);
+    REQUIRE(order.permutations_computed == 1);
+    // The second mesh's order is cancelled halfway, over the first one's arrays.
+    int polls = 0;
+    const std::function<void()> cancel_at_second_poll = [&polls] {
+        if (++polls == 2) throw RenderCancelled();
+    };
+    CHECK_THROWS_AS(detail::scene_in_render_order(second, options, false, order, cancel_at_second_poll),
+                    RenderCancelled);
+    CHECK(polls == 2);                        // stopped at that poll, not at the end
+    CHECK(order.permutations_computed == 1);  // the second permutation was never finished
+    // The first mesh again: its permutation was overwritten, so it is computed
+    // afresh (not taken for still valid) and drawn as a fresh order draws it.
+    const Scene& drawn = detail::scene_in_render_order(first, options, false, order);
+    CHECK(order.permutations_computed == 2);
+    detail::MeshOrder fresh;
+    const Scene& expected = detail::scene_in_render_order(first, options, false, fresh);
+    CHECK(drawn.mesh.triangles == expected.mesh.triangles);
+    CHECK(drawn.mesh.positions == expected.mesh.positions);
 }
