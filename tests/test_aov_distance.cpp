@@ -159,6 +159,24 @@ TEST_CASE("distance of a plane facing a look-at camera is z_c sqrt(1 + x^2 + y^2
     }
 }
 
+TEST_CASE("distance alone: no depth plane handed back, the colour image unchanged, the same values as with depth") {
+    Scene scene = plane_scene(Camera::look_at({0.3, 0.2, 5.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 1.0, 1.0, 1.0), 16, 16);
+    add_quad(scene.mesh, {0.0, 0.0, 0.0}, glm::normalize(glm::dvec3(1.0, 0.0, 0.3)), {0.0, 1.0, 0.0}, 1.5);
+    for (const int samples : {1, 3}) {
+        RenderOptions options = RenderOptions::exact();
+        options.samples_per_axis = samples;
+        const RenderResult plain = render(scene, options);
+        options.aovs.distance = true;
+        const RenderResult alone = render(scene, options);
+        CHECK(alone.image.pixels == plain.image.pixels);
+        CHECK(alone.aovs.depth.empty());  // used inside (distance is made from it), not asked for
+        CHECK(alone.aovs.normal.empty());
+        REQUIRE(alone.aovs.distance.size() == 16 * 16);
+        const RenderResult both = render(scene, with_planes(samples, SamplePattern::ordered_grid));
+        CHECK(alone.aovs.distance == both.aovs.distance);
+    }
+}
+
 TEST_CASE("orthographic distance is the depth, from the plane through the eye") {
     Scene scene = plane_scene(Camera::orthographic({0.0, 0.0, 5.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 2.0, 2.0), 24, 24);
     // A tilted plane: depth varies over the image, and distance must follow it exactly.
