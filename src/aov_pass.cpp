@@ -14,6 +14,7 @@ namespace phongrast::detail {
 namespace {
 
 constexpr float kBackgroundDepth = std::numeric_limits<float>::infinity();
+constexpr double kLargestDistance = std::numeric_limits<float>::max();
 
 template <typename Real>
 glm::vec3 world_from_camera(const CameraFrame& frame, const Vec3<Real>& camera_normal) {
@@ -69,7 +70,11 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
                     // z_c along the ray through this sample's centre (AovPassInput::sample_offset).
                     const glm::dvec3 ray = frame.camera_ray(first_column + k + 0.5 + in.sample_offset.x,
                                                             row + 0.5 + in.sample_offset.y);
-                    out.distance[index] = static_cast<float>(static_cast<double>(surface_depth) * glm::length(ray));
+                    // At most float's largest: a depth near it (double precision) times a wide ray must not
+                    // become +infinity, the background's value.
+                    out.distance[index] = static_cast<float>(std::min(static_cast<double>(surface_depth) *
+                                                                          glm::length(ray),
+                                                                      kLargestDistance));
                 }
             }
             if (planes.id) {

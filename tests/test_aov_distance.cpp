@@ -177,6 +177,29 @@ TEST_CASE("distance alone: no depth plane handed back, the colour image unchange
     }
 }
 
+TEST_CASE("a distance past float's largest is float's largest, never the background's infinity") {
+    // Double precision draws depths up to 1e300; the planes are float. At z_c = 1e38 a corner pixel's
+    // ray (an 8 x 8 sensor at focal 1: length about 5.3) reaches 5.3e38, past float's 3.4e38.
+    Scene scene = plane_scene(Camera::look_at({0.0, 0.0, 1e38}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 1.0, 8.0, 8.0), 8, 8);
+    add_quad(scene.mesh, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 6e38);
+    RenderOptions options = with_planes(1, SamplePattern::ordered_grid);
+    options.precision = Precision::double_float;
+    const RenderResult result = render(scene, options);
+    const AovPlanes& planes = result.aovs;
+    REQUIRE(planes.distance.size() == 64);
+    int clamped = 0;
+    for (std::size_t p = 0; p < 64; ++p) {
+        INFO("pixel " << p);
+        REQUIRE(planes.id[p] >= 0);
+        CHECK(planes.depth[p] == Approx(1e38).epsilon(1e-5));
+        CHECK(std::isfinite(planes.distance[p]));
+        CHECK(planes.distance[p] >= planes.depth[p]);
+        clamped += planes.distance[p] == std::numeric_limits<float>::max();
+    }
+    CHECK(clamped >= 4);  // the corners at least
+    CHECK(clamped < 64);  // the centre's rays are short enough
+}
+
 TEST_CASE("orthographic distance is the depth, from the plane through the eye") {
     Scene scene = plane_scene(Camera::orthographic({0.0, 0.0, 5.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 2.0, 2.0), 24, 24);
     // A tilted plane: depth varies over the image, and distance must follow it exactly.
