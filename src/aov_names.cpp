@@ -23,11 +23,13 @@ AovRequest parse_aovs(std::string_view text) {
             request.alpha = true;
         } else if (part == "uv") {
             request.uv = true;
+        } else if (part == "distance") {
+            request.distance = true;
         } else if (part == "all") {
             request = AovRequest::all();
         } else {
             throw std::invalid_argument("aov: unknown output '" + std::string(part) + "' in '" + std::string(text) +
-                                        "'; expected depth, normal, id, alpha, uv or all, joined with ','");
+                                        "'; expected depth, normal, id, alpha, uv, distance or all, joined with ','");
         }
         if (comma == std::string_view::npos) break;
         start = comma + 1;
@@ -47,6 +49,7 @@ std::string to_string(const AovRequest& request) {
     append(request.id, "id");
     append(request.alpha, "alpha");
     append(request.uv, "uv");
+    append(request.distance, "distance");
     return names.empty() ? "none" : names;
 }
 

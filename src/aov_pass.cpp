@@ -14,6 +14,7 @@ namespace phongrast::detail {
 namespace {
 
 constexpr float kBackgroundDepth = std::numeric_limits<float>::infinity();
+constexpr double kLargestDistance = std::numeric_limits<float>::max();
 
 template <typename Real>
 glm::vec3 world_from_camera(const CameraFrame& frame, const Vec3<Real>& camera_normal) {
@@ -41,6 +42,7 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
                                                                         vertices[tri[2]].normal));
     }
     const std::size_t columns = static_cast<std::size_t>(out.columns);
+    const CameraFrame& frame = *in.frame;
     for_each_covered_span(draw.coverage, row_begin, row_end,
                           [&](int row, int first_column, int count, const std::int64_t* e, const std::int64_t* step) {
         Real q[3], dq[3];  // as the fill computes them
@@ -64,6 +66,16 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
                     surface_depth = Real(1) / sum;
                 }
                 out.depth[index] = static_cast<float>(surface_depth);
+                if (planes.distance) {
+                    // z_c along the ray through this sample's centre (AovPassInput::sample_offset).
+                    const glm::dvec3 ray = frame.camera_ray(first_column + k + 0.5 + in.sample_offset.x,
+                                                            row + 0.5 + in.sample_offset.y);
+                    // At most float's largest: a depth near it (double precision) times a wide ray must not
+                    // become +infinity, the background's value.
+                    out.distance[index] = static_cast<float>(std::min(static_cast<double>(surface_depth) *
+                                                                          glm::length(ray),
+                                                                      kLargestDistance));
+                }
             }
             if (planes.id) {
                 out.id[index] = static_cast<std::int32_t>(in.original_triangle ? in.original_triangle[source] : source);
@@ -98,6 +110,7 @@ void AovSamples::reset(int rows_, int columns_, const AovRequest& planes) {
     normal.assign(planes.normal ? count : 0, glm::vec3(0.0f));
     id.assign(planes.id ? count : 0, -1);
     uv.assign(planes.uv ? count : 0, glm::vec2(0.0f));
+    distance.assign(planes.distance ? count : 0, kBackgroundDepth);
 }
 
 template <typename Real>
@@ -128,7 +141,8 @@ template void run_aov_pass<double>(const AovPassInput<double>&, const AovRequest
 
 AovRequest sample_planes_for(const AovRequest& requested, int factor) {
     AovRequest planes = requested;
-    if (factor > 1 && (requested.normal || requested.id || requested.uv)) planes.depth = true;
+    // Distance is z_c times the sample's ray length: it needs the depth even with one sample.
+    if ((factor > 1 && (requested.normal || requested.id || requested.uv)) || requested.distance) planes.depth = true;
     return planes;
 }
 
@@ -140,6 +154,7 @@ void reset_aov_planes(int rows, int columns, const AovRequest& planes, AovPlanes
     out.normal.assign(planes.normal ? count : 0, glm::vec3(0.0f));
     out.id.assign(planes.id ? count : 0, -1);
     out.uv.assign(planes.uv ? count : 0, glm::vec2(0.0f));
+    out.distance.assign(planes.distance ? count : 0, kBackgroundDepth);
     out.alpha.assign(planes.alpha ? count : 0, 0.0f);
 }
 
@@ -172,6 +187,7 @@ void resolve_aovs(const AovSamples& samples, int factor, const AovRequest& plane
             if (planes.normal) out.normal[pixel] = samples.normal[chosen];
             if (planes.id) out.id[pixel] = samples.id[chosen];
             if (planes.uv) out.uv[pixel] = samples.uv[chosen];
+            if (planes.distance) out.distance[pixel] = samples.distance[chosen];
         }
     }
 }

@@ -30,6 +30,7 @@ struct AovSamples {
     std::vector<std::int32_t> id;      ///< source triangle, -1 where nothing painted
     std::vector<std::uint8_t> covered; ///< 1 where some triangle covers the sample
     std::vector<glm::vec2> uv;         ///< (s, t); zero where nothing painted
+    std::vector<float> distance;       ///< distance from the eye; +infinity where nothing painted
 
     /// Sized for rows x columns with the planes `planes` asks for, all background; memory reused.
     void reset(int rows, int columns, const AovRequest& planes);
@@ -45,6 +46,9 @@ struct AovPassInput {
     const std::vector<Triangle>* triangles = nullptr;
     const std::vector<Varyings<Real>>* vertices = nullptr;  ///< camera-space varyings, by mesh vertex
     const CameraFrame* frame = nullptr;
+    /// The pass's sample offset (View::sample_offset): sample (row, column) lies at the frame's
+    /// pixel coordinates (column + 0.5 + offset.x, row + 0.5 + offset.y), where the distance's ray goes.
+    glm::dvec2 sample_offset{0.0};
     /// The vertices' (s, t) is in their `lit` (Phong and flat of a scene with
     /// texture coordinates): the uv plane interpolates it; else it stays zero.
     bool uv_in_lit = false;
@@ -60,7 +64,7 @@ void run_aov_pass(const AovPassInput<Real>& input, const AovRequest& planes, Aov
 
 /// Adds the pixels of `samples` (factor x factor samples per pixel) into
 /// `out`, by the rule of AovPlanes: the nearest covered sample gives depth,
-/// normal and id, unless `out` already holds a nearer one from an earlier
+/// distance, normal, id and uv, unless `out` already holds a nearer one from an earlier
 /// rotated-grid pass; alpha counts covered samples until finish_aovs.
 /// `planes` are the planes `out` was reset with (sample_planes_for).
 void resolve_aovs(const AovSamples& samples, int factor, const AovRequest& planes, AovPlanes& out);
@@ -73,7 +77,8 @@ void finish_aovs(const AovRequest& requested, int samples_per_pixel, AovPlanes& 
 void reset_aov_planes(int rows, int columns, const AovRequest& requested, AovPlanes& out);
 
 /// The planes the sample pass must fill to resolve `requested` with `factor` samples per axis:
-/// depth too whenever a pixel has several samples to choose the nearest from.
+/// depth too whenever a pixel has several samples to choose the nearest from, and
+/// whenever distance is asked for (it is computed from the depth).
 AovRequest sample_planes_for(const AovRequest& requested, int factor);
 
 }  // namespace phongrast::detail

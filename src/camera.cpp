@@ -180,6 +180,21 @@ ProjectedPoint CameraFrame::pixel_from_camera(const glm::dvec3& point_camera) co
     return result;
 }
 
+glm::dvec3 CameraFrame::camera_ray(double column, double row) const {
+    if (model == CameraModel::opencv) {
+        // column = (fx X + s Y) / Z + cx + 0.5 and row = fy Y / Z + cy + 0.5, in image pixels, solved for
+        // X / Z and Y / Z; camera space's y is OpenCV's -Y.
+        const double Y = (row / samples_per_pixel - opencv.cy - 0.5) / opencv.fy;
+        const double X = (column / samples_per_pixel - opencv.cx - 0.5 - opencv.skew * Y) / opencv.fx;
+        return {X, -Y, 1.0};
+    }
+    if (model == CameraModel::orthographic) return {0.0, 0.0, 1.0};
+    // column = (x + W/2) / W N and row = (H/2 - y) / H M, with x = focal x_c / z_c and y = focal y_c / z_c.
+    const double x = column / columns * sensor_width - sensor_width / 2.0;
+    const double y = sensor_height / 2.0 - row / rows * sensor_height;
+    return {x / focal, y / focal, 1.0};
+}
+
 ProjectedPoint CameraFrame::project(const glm::dvec3& point_world) const {
     const glm::dvec3 point_camera = camera_from_world(point_world);
     if (!(point_camera.z > 0.0)) {

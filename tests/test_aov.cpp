@@ -253,8 +253,9 @@ TEST_CASE("the depth buffer reports the nearest surface where painter's order sh
 
 TEST_CASE("aov names: parsing, listing and errors") {
     CHECK(to_string(parse_aovs("depth,id")) == "depth,id");
-    CHECK(to_string(parse_aovs("all")) == "depth,normal,id,alpha,uv");
+    CHECK(to_string(parse_aovs("all")) == "depth,normal,id,alpha,uv,distance");
     CHECK_FALSE(AovRequest{}.any());
     CHECK_THROWS_WITH(parse_aovs("depth,colour"), Catch::Contains("unknown output 'colour'"));
-    CHECK_THROWS_WITH(parse_aovs(""), Catch::Contains("expected depth, normal, id, alpha, uv or all"));
+    CHECK_THROWS_WITH(parse_aovs(""), Catch::Contains("expected depth, normal, id, alpha, uv, distance or all"));
+    CHECK(parse_aovs("distance").distance);
 }

@@ -426,7 +426,7 @@ TEST_CASE("the uv output: (s, t) at each pixel, interpolated as the shading inte
         CHECK(background > 0);
     }
     CHECK(parse_aovs("uv").uv);
-    CHECK(to_string(AovRequest::all()) == "depth,normal,id,alpha,uv");
+    CHECK(to_string(AovRequest::all()) == "depth,normal,id,alpha,uv,distance");
 }
 
 namespace {

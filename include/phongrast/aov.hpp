@@ -1,6 +1,6 @@
 // Extra outputs of a render next to the colour image ("arbitrary output
-// variables"): camera depth, shading normal, triangle id and coverage, each
-// computed only when asked for.
+// variables"): camera depth, distance from the eye, shading normal, triangle
+// id, coverage and texture coordinates, each computed only when asked for.
 #ifndef PHONGRAST_AOV_HPP
 #define PHONGRAST_AOV_HPP
 
@@ -22,12 +22,13 @@ struct AovRequest {
     bool id = false;      ///< index of the mesh triangle that paints the sample
     bool alpha = false;   ///< covered fraction of the pixel's samples
     bool uv = false;      ///< texture coordinates (s, t) of the surface that paints the sample
+    bool distance = false;  ///< distance from the eye to the surface that paints the sample
 
-    bool any() const { return depth || normal || id || alpha || uv; }
-    static AovRequest all() { return {true, true, true, true, true}; }
+    bool any() const { return depth || normal || id || alpha || uv || distance; }
+    static AovRequest all() { return {true, true, true, true, true, true}; }
 };
 
-/// "depth,normal,id,alpha" (any subset, comma-separated, or "all"); throws
+/// "depth,normal,id,alpha,uv,distance" (any subset, comma-separated, or "all"); throws
 /// std::invalid_argument naming an unknown entry and listing the valid ones.
 AovRequest parse_aovs(std::string_view text);
 std::string to_string(const AovRequest& request);
@@ -36,7 +37,7 @@ std::string to_string(const AovRequest& request);
 /// a plane that was not requested is empty.
 ///
 /// Which sample a pixel reports: without supersampling, its centre. With
-/// samples_per_axis > 1, depth, normal and id come from the pixel's nearest
+/// samples_per_axis > 1, depth, distance, normal, id and uv come from the pixel's nearest
 /// covered sample (smallest depth; the first in sample order on a tie), so
 /// they always describe one real surface point, and alpha counts all samples.
 struct AovPlanes {
@@ -63,6 +64,14 @@ struct AovPlanes {
     /// background, on faces without texture coordinates, and with the Gouraud
     /// shader in a scene that draws no texture (its vertices carry no (s, t) then).
     std::vector<glm::vec2> uv;
+    /// Euclidean distance in world units from the eye to the surface point
+    /// the depth comes from (the same sample): z_c times the length of the
+    /// camera-space ray (x_c / z_c, y_c / z_c, 1) through the sample
+    /// (CameraFrame::camera_ray), so distance / depth depends on the sample's
+    /// position alone. For the orthographic camera, whose eye is at infinity,
+    /// it is the distance from the image plane through Camera::eye, which is
+    /// z_c (the ray is (0, 0, 1)). +infinity on the background, as depth.
+    std::vector<float> distance;
 };
 
 }  // namespace phongrast

@@ -147,6 +147,13 @@ struct CameraFrame {
     /// Continuous pixel coordinates of a camera-space point (perspective
     /// models: z_c != 0).
     ProjectedPoint pixel_from_camera(const glm::dvec3& point_camera) const;
+    /// The inverse of pixel_from_camera for a point of depth 1: the camera-space
+    /// direction (x_c / z_c, y_c / z_c, 1) of the ray through the continuous
+    /// pixel coordinates (column, row) of this frame (for an OpenCV camera in
+    /// samples: divided by samples_per_pixel first, skew included). A point of
+    /// depth z_c seen there is z_c times it, at distance z_c |camera_ray| from
+    /// the eye. Orthographic: (0, 0, 1) everywhere (parallel rays).
+    glm::dvec3 camera_ray(double column, double row) const;
     /// Continuous pixel coordinates and depth of a world point. For z_c <= 0 the
     /// point is not in front of the eye: column and row are then meaningless
     /// (but finite), and callers must look at `depth`.

@@ -37,6 +37,7 @@ void write_exr_with_aovs(const Image& image, const AovPlanes& aovs, const std::s
     require_plane_size(aovs.normal.size(), image, path, "normal");
     require_plane_size(aovs.id.size(), image, path, "id");
     require_plane_size(aovs.uv.size(), image, path, "uv");
+    require_plane_size(aovs.distance.size(), image, path, "distance");
 
     // One channel per plane, each read in place by OpenEXR (OpenEXR stores them in alphabetical order).
     const auto floats = [](const auto& plane, std::size_t offset) {
@@ -49,6 +50,7 @@ void write_exr_with_aovs(const Image& image, const AovPlanes& aovs, const std::s
     }
     if (!aovs.alpha.empty()) channels.push_back({"A", false, floats(aovs.alpha, 0), sizeof(float)});
     if (!aovs.depth.empty()) channels.push_back({"Z", false, floats(aovs.depth, 0), sizeof(float)});
+    if (!aovs.distance.empty()) channels.push_back({"distance", false, floats(aovs.distance, 0), sizeof(float)});
     if (!aovs.normal.empty()) {
         for (int c = 0; c < 3; ++c) {
             channels.push_back({std::string("N.") + "XYZ"[c], false, floats(aovs.normal, 4 * static_cast<std::size_t>(c)),
@@ -91,6 +93,10 @@ void read_exr_with_aovs(const std::string& path, Image& image, AovPlanes& aovs) 
     if (reader.has("Z")) {
         aovs.depth.resize(pixels);
         channels.push_back({"Z", false, at(aovs.depth, 0), sizeof(float)});
+    }
+    if (reader.has("distance")) {
+        aovs.distance.resize(pixels);
+        channels.push_back({"distance", false, at(aovs.distance, 0), sizeof(float)});
     }
     if (reader.has("N.X") && reader.has("N.Y") && reader.has("N.Z")) {
         aovs.normal.resize(pixels);

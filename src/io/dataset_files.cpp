@@ -27,6 +27,7 @@ constexpr FileKind kFileKinds[] = {
     {"depth", &DatasetFiles::depth, ".depth.exr"},   {"depth16", &DatasetFiles::depth16, ".depth.png"},
     {"mask", &DatasetFiles::mask, ".mask.png"},      {"id", &DatasetFiles::id, ".id.png"},
     {"normal", &DatasetFiles::normal, ".normal.png"}, {"object", &DatasetFiles::object, ".object.png"},
+    {"distance", &DatasetFiles::distance, ".distance.exr"},
 };
 
 std::string stem_path(const std::string& colour_path) {
@@ -51,6 +52,15 @@ void write_png_file(const std::string& path, const void* data, int rows, int col
     pixels.bit_depth = bit_depth;
     replace_file_atomically(path, [&](const std::string& temporary) {
         detail::write_png(temporary, path, pixels, detail::png_settings(options.png_compression));
+    });
+}
+
+// One 32-bit float channel "Z": the depth file's layout, which the distance file shares (one reader reads both).
+void write_float_exr(const std::string& path, const std::vector<float>& plane, int rows, int columns) {
+    std::vector<float> values = plane;  // write_exr reads through a non-const pointer
+    replace_file_atomically(path, [&](const std::string& temporary) {
+        detail::write_exr(temporary, path, columns, rows,
+                          {detail::ExrChannel{"Z", false, reinterpret_cast<char*>(values.data()), sizeof(float)}});
     });
 }
 
@@ -82,6 +92,7 @@ AovRequest DatasetFiles::planes() const {
     request.alpha = mask;
     request.id = id || object;
     request.normal = normal;
+    request.distance = distance;
     return request;
 }
 
@@ -91,6 +102,7 @@ void DatasetFiles::add_planes_to(AovRequest& aovs) const {
     aovs.normal = aovs.normal || needed.normal;
     aovs.id = aovs.id || needed.id;
     aovs.alpha = aovs.alpha || needed.alpha;
+    aovs.distance = aovs.distance || needed.distance;
 }
 
 DatasetFiles parse_dataset_files(std::string_view text) {
@@ -100,7 +112,7 @@ DatasetFiles parse_dataset_files(std::string_view text) {
         const std::size_t comma = std::min(text.find(',', start), text.size());
         const std::string_view entry = text.substr(start, comma - start);
         if (entry == "all") {
-            files.depth = files.mask = files.id = files.normal = files.object = true;
+            files.depth = files.mask = files.id = files.normal = files.object = files.distance = true;
             start = comma + 1;
             continue;
         }
@@ -108,7 +120,7 @@ DatasetFiles parse_dataset_files(std::string_view text) {
                                        [&](const FileKind& k) { return entry == k.name; });
         if (kind == std::end(kFileKinds)) {
             throw std::invalid_argument("aov-files: unknown '" + std::string(entry) +
-                                        "'; expected depth, depth16, mask, id, normal, object (comma-separated) or all");
+                                        "'; expected depth, depth16, mask, id, normal, object, distance (comma-separated) or all");
         }
         files.*(kind->member) = true;
         start = comma + 1;
@@ -175,6 +187,7 @@ void write_dataset_files(const AovPlanes& planes, const std::vector<std::size_t>
     std::vector<std::uint16_t> depth16, id16, object16;
     std::vector<std::uint8_t> mask8, normal8;
     if (files.depth) require_plane(planes.depth.size() == pixels, "depth", stem + ".depth.exr");
+    if (files.distance) require_plane(planes.distance.size() == pixels, "distance", stem + ".distance.exr");
     if (files.depth16) {
         require_plane(planes.depth.size() == pixels, "depth", stem + ".depth.png");
         depth16 = depth_steps(planes.depth, options.depth_scale, stem + ".depth.png");
@@ -222,20 +235,14 @@ void write_dataset_files(const AovPlanes& planes, const std::vector<std::size_t>
         }
     }
 
-    if (files.depth) {
-        const std::string path = stem + ".depth.exr";
-        std::vector<float> depth = planes.depth;  // write_exr reads through a non-const pointer
-        replace_file_atomically(path, [&](const std::string& temporary) {
-            detail::write_exr(temporary, path, planes.columns, planes.rows,
-                              {detail::ExrChannel{"Z", false, reinterpret_cast<char*>(depth.data()), sizeof(float)}});
-        });
-    }
+    if (files.depth) write_float_exr(stem + ".depth.exr", planes.depth, planes.rows, planes.columns);
     const int rows = planes.rows, columns = planes.columns;
     if (files.depth16) write_png_file(stem + ".depth.png", depth16.data(), rows, columns, 1, 16, options);
     if (files.mask) write_png_file(stem + ".mask.png", mask8.data(), rows, columns, 1, 8, options);
     if (files.id) write_png_file(stem + ".id.png", id16.data(), rows, columns, 1, 16, options);
     if (files.normal) write_png_file(stem + ".normal.png", normal8.data(), rows, columns, 3, 8, options);
     if (files.object) write_png_file(stem + ".object.png", object16.data(), rows, columns, 1, 16, options);
+    if (files.distance) write_float_exr(stem + ".distance.exr", planes.distance, rows, columns);
 }
 
 }  // namespace phongrast::io

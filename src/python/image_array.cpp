@@ -95,6 +95,9 @@ py::dict aovs_to_dict(AovPlanes&& aovs) {
     py::dict planes;
     const py::ssize_t rows = aovs.rows, columns = aovs.columns;
     if (!aovs.depth.empty()) planes["depth"] = plane_to_array<float, float>(std::move(aovs.depth), rows, columns);
+    if (!aovs.distance.empty()) {
+        planes["distance"] = plane_to_array<float, float>(std::move(aovs.distance), rows, columns);
+    }
     if (!aovs.normal.empty()) {
         planes["normal"] = plane_to_array<glm::vec3, float>(std::move(aovs.normal), rows, columns);
     }

@@ -39,8 +39,9 @@ py::array view_rows_of_three(Component* data, std::size_t count, py::handle owne
 /// RenderStats as a dict of plain Python numbers (and the effect set as a string).
 py::dict stats_to_dict(const RenderStats& stats);
 /// The extra outputs that were asked for, as a dict of arrays that take over
-/// their buffers: depth (M x N float32), normal (M x N x 3 float32), id
-/// (M x N int32, -1 on the background), alpha (M x N float32).
+/// their buffers: depth (M x N float32), distance (M x N float32), normal
+/// (M x N x 3 float32), id (M x N int32, -1 on the background), alpha (M x N
+/// float32). (uv is not handed to Python.)
 py::dict aovs_to_dict(AovPlanes&& aovs);
 
 }  // namespace phongrast::python

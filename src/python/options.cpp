@@ -21,8 +21,10 @@ const char* const option_keywords_doc = R"(Rendering keywords:
     overdraw: "auto" (default), "all" or "visible" (speed only; the same picture)
     back_faces: "draw" (default, the contract) or "cull" (closed meshes seen from outside)
     texture_filter: "bilinear" (default, the contract), "nearest" or "trilinear"
-    aovs: extra outputs, "depth,normal,id,alpha" (any of them, or "all"); render and
+    aovs: extra outputs, "depth,distance,normal,id,alpha" (any of them, or "all"); render and
         Renderer.render then return (image, stats, planes), planes a dict of arrays
+        (distance: from the eye, z_c times the sample's ray length; = depth for the
+        orthographic camera)
     progress: a callable taking the fraction done (0 to 1), called about every 20 ms
         from the rendering thread; returning False cancels (phongrast.RenderCancelled),
         an exception it raises stops the render and propagates. Ctrl-C stops any

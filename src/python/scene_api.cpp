@@ -618,7 +618,7 @@ automatically. Every field is a property.)");
         return py::make_tuple(image_to_array(std::move(image)), aovs_to_dict(std::move(planes)));
     }, py::arg("path"),
        "Reads an EXR written with extra outputs (phongrast render --aov): (image, planes), planes a dict with "
-       "the depth, normal, id and alpha arrays the file holds, as render(..., aovs=...) returns them.");
+       "the depth, distance, normal, id and alpha arrays the file holds, as render(..., aovs=...) returns them.");
 }
 
 }  // namespace phongrast::python

@@ -108,6 +108,8 @@ TEST_CASE("render with aov all writes the library's planes as named EXR channels
     CHECK(planes.normal == expected.aovs.normal);
     CHECK(planes.id == expected.aovs.id);
     CHECK(planes.alpha == expected.aovs.alpha);
+    CHECK(planes.distance == expected.aovs.distance);
+    CHECK(planes.distance.size() == 96 * 96);
     CHECK(std::count(planes.id.begin(), planes.id.end(), -1) > 0);  // some background, kept as -1
     CHECK(folder.entry_count() == 3);                               // the EXR and the two captured streams
 
@@ -118,6 +120,7 @@ TEST_CASE("render with aov all writes the library's planes as named EXR channels
     CHECK(planes.id.size() == 32 * 32);
     CHECK(planes.normal.empty());
     CHECK(planes.alpha.empty());
+    CHECK(planes.distance.empty());
 }
 
 TEST_CASE("render with transparent writes an RGBA PNG whose alpha is the coverage") {
@@ -224,13 +227,13 @@ std::uint8_t to_byte(float value) { return static_cast<std::uint8_t>(std::lround
 
 }  // namespace
 
-TEST_CASE("render with aov-files writes depth, mask, id, normal and object files holding the library's planes") {
+TEST_CASE("render with aov-files writes depth, mask, id, normal, object and distance files holding the library's planes") {
     TemporaryFolder folder;
     const Run run = run_cli(folder, "render '" + default_scene +
                                         "' --size 80x80 --samples 2 --aov-files all,depth16 --depth-scale 0.0005 -o k.png");
     INFO(run.err);
     REQUIRE(run.status == 0);
-    const RenderResult expected = library_render(80, AovRequest{true, true, true, true, false}, 2);
+    const RenderResult expected = library_render(80, AovRequest{true, true, true, true, false, true}, 2);
     const AovPlanes& planes = expected.aovs;
     const std::size_t pixels = 80 * 80;
 
@@ -240,6 +243,13 @@ TEST_CASE("render with aov-files writes depth, mask, id, normal and object files
     REQUIRE(exr->spec().channelnames == std::vector<std::string>{"Z"});
     REQUIRE(exr->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, depth.data()));
     CHECK(depth == planes.depth);  // +inf on the background, as the EXR channel
+
+    std::vector<float> distance(pixels);
+    auto distance_exr = OIIO::ImageInput::open(folder.file("k.distance.exr"));
+    REQUIRE(distance_exr);
+    REQUIRE(distance_exr->spec().channelnames == std::vector<std::string>{"Z"});  // the depth file's layout
+    REQUIRE(distance_exr->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, distance.data()));
+    CHECK(distance == planes.distance);  // +inf on the background, as depth
 
     const auto depth16 = read_values(folder.file("k.depth.png"), 1);
     const auto mask = read_values(folder.file("k.mask.png"), 1);
@@ -255,6 +265,7 @@ TEST_CASE("render with aov-files writes depth, mask, id, normal and object files
         CHECK(mask[p] == to_byte(planes.alpha[p]));
         CHECK(id[p] == planes.id[p] + 1);
         CHECK(object[p] == (background ? 0 : 1));  // one mesh: object 0
+        if (!background) CHECK(distance[p] > depth[p]);  // the default camera: no pixel on the optical axis
         for (int c = 0; c < 3; ++c) {
             CHECK(normal[3 * p + c] == (background ? 0 : to_byte((planes.normal[p][c] + 1.0f) * 0.5f)));
         }
@@ -299,5 +310,5 @@ TEST_CASE("dataset files: object numbers, and values a 16-bit file cannot hold r
     zero.depth_scale = 0.0;
     CHECK_THROWS_WITH(io::check_dataset_files(files, zero, 10, 1), Catch::Contains("depth-scale"));
     CHECK_THROWS_WITH(io::parse_dataset_files("depth,colour"), Catch::Contains("unknown 'colour'"));
-    CHECK(io::to_string(io::parse_dataset_files("all")) == "depth,mask,id,normal,object");
+    CHECK(io::to_string(io::parse_dataset_files("all")) == "depth,mask,id,normal,object,distance");
 }

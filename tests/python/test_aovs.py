@@ -18,8 +18,9 @@ def test_planes_equal_the_command_exr_channels(tmp_path):
     image, stats, planes = phongrast.render(scene, samples=2, aovs="all")
     cpp_image, cpp_planes = phongrast.read_aovs(str(tmp_path / "cpp.exr"))
     assert_same_bits(image, cpp_image)
-    assert sorted(planes) == ["alpha", "depth", "id", "normal"]
+    assert sorted(planes) == ["alpha", "depth", "distance", "id", "normal"]
     assert planes["depth"].shape == (80, 96) and planes["depth"].dtype == np.float32
+    assert planes["distance"].shape == (80, 96) and planes["distance"].dtype == np.float32
     assert planes["normal"].shape == (80, 96, 3) and planes["normal"].dtype == np.float32
     assert planes["id"].shape == (80, 96) and planes["id"].dtype == np.int32
     assert planes["alpha"].shape == (80, 96) and planes["alpha"].dtype == np.float32
@@ -28,6 +29,9 @@ def test_planes_equal_the_command_exr_channels(tmp_path):
     background = planes["id"] == -1
     assert background.any() and (~background).any()
     assert np.all(np.isinf(planes["depth"][background]))
+    assert np.all(np.isinf(planes["distance"][background]))
+    # From the eye, not along the axis: never less than the depth, more off the axis.
+    assert np.all(planes["distance"][~background] >= planes["depth"][~background])
     assert np.all(planes["alpha"][background] == 0.0)
     assert np.all(planes["id"][~background] < stats["triangles_in"])
     lengths = np.linalg.norm(planes["normal"][~background], axis=-1)

@@ -6,6 +6,11 @@ numbers) and must land on the rendered silhouette, whose bounding box must
 match the projected one to a pixel (4 x 4 samples per pixel, so a thin
 tip still covers a sample of the pixel its vertex is in); transforms.json must hold the same
 cameras in OpenGL axes and name the images relative to itself.
+
+The same batch writes depth and distance (EXR), checked against the same
+projection: where a vertex is seen, the depth there is its z_c and the
+distance |camera centre - vertex|, and everywhere on the silhouette
+distance / depth is the length of K^-1 (u, v, 1) at one of the pixel's samples.
 """
 import json
 import os
@@ -13,6 +18,7 @@ import pathlib
 import subprocess
 
 import numpy as np
+import pytest
 
 import phongrast
 
@@ -21,6 +27,7 @@ SOURCE = pathlib.Path(os.environ["PHONGRAST_SOURCE_DIR"])
 SHARED = pathlib.Path(os.environ.get("PHONGRAST_SHARED_ASSETS_DIR", ""))
 VIEWS = 50
 SIZE = 96
+SAMPLES = 4  # per axis: 16 samples per pixel, on the ordered grid
 
 
 def mesh_file():
@@ -32,9 +39,10 @@ def mesh_file():
     return SOURCE / "assets" / "default.obj"
 
 
-def used_vertices(path):
-    """The OBJ's vertex positions that some face uses (n x 3)."""
-    positions, used = [], set()
+def read_obj(path):
+    """The OBJ's vertex positions (n x 3) and its triangles (m x 3 indices into them; polygons as fans,
+    in file order: the id output's numbering)."""
+    positions, triangles = [], []
     for line in open(path):
         parts = line.split()
         if not parts:
@@ -42,10 +50,18 @@ def used_vertices(path):
         if parts[0] == "v":
             positions.append([float(x) for x in parts[1:4]])
         elif parts[0] == "f":
+            corners = []
             for corner in parts[1:]:
                 index = int(corner.split("/")[0])
-                used.add(index - 1 if index > 0 else len(positions) + index)
-    return np.array(positions)[sorted(used)]
+                corners.append(index - 1 if index > 0 else len(positions) + index)
+            triangles += [[corners[0], corners[k], corners[k + 1]] for k in range(1, len(corners) - 1)]
+    return np.array(positions), np.array(triangles)
+
+
+def used_vertices(path):
+    """The OBJ's vertex positions that some face uses (n x 3)."""
+    positions, triangles = read_obj(path)
+    return positions[np.unique(triangles)]
 
 
 def project(K, world_to_camera, points):
@@ -55,15 +71,22 @@ def project(K, world_to_camera, points):
     return pixels[:, 0] / pixels[:, 2], pixels[:, 1] / pixels[:, 2], camera[:, 2]
 
 
-def test_a_sphere_layout_with_masks_ids_and_cameras_reprojects_onto_its_silhouettes(tmp_path):
+@pytest.fixture(scope="module")
+def dataset(tmp_path_factory):
+    """One batch for every test here: the 50 views with their files, and the folder they are in."""
     mesh = mesh_file()
-    job = {"mesh": str(mesh), "layout": "sphere", "views": VIEWS, "size": f"{SIZE}x{SIZE}", "samples": 4,
-           "output": "set/{view}.png", "aov_files": "mask,id",
+    work = tmp_path_factory.mktemp("dataset")
+    job = {"mesh": str(mesh), "layout": "sphere", "views": VIEWS, "size": f"{SIZE}x{SIZE}", "samples": SAMPLES,
+           "output": "set/{view}.png", "aov_files": "mask,id,depth,distance",
            "camera_out": "set/cameras.json", "transforms_out": "set/transforms.json"}
-    (tmp_path / "jobs.jsonl").write_text(json.dumps(job) + "\n")
-    run = subprocess.run([EXE, "batch", "jobs.jsonl", "-o", "out", "-q"], cwd=tmp_path, capture_output=True, text=True)
+    (work / "jobs.jsonl").write_text(json.dumps(job) + "\n")
+    run = subprocess.run([EXE, "batch", "jobs.jsonl", "-o", "out", "-q"], cwd=work, capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
-    folder = tmp_path / "out" / "set"
+    return mesh, work / "out" / "set"
+
+
+def test_a_sphere_layout_with_masks_ids_and_cameras_reprojects_onto_its_silhouettes(dataset):
+    mesh, folder = dataset
     cameras = json.loads((folder / "cameras.json").read_text())
     transforms = json.loads((folder / "transforms.json").read_text())
     assert len(cameras["images"]) == VIEWS
@@ -110,6 +133,108 @@ def test_a_sphere_layout_with_masks_ids_and_cameras_reprojects_onto_its_silhouet
         rows, columns = np.nonzero(covered)
         assert abs(columns.min() - column.min()) <= 1.0 and abs(columns.max() - column.max()) <= 1.0, view
         assert abs(rows.min() - row.min()) <= 1.0 and abs(rows.max() - row.max()) <= 1.0, view
+
+
+def read_float_exr(path):
+    """A one-channel float EXR (the depth and distance files: channel Z) as an M x N float64 array."""
+    return phongrast.read_image(str(path))[:, :, 0].astype(np.float64)
+
+
+def sample_ray_lengths(K):
+    """|K^-1 (u, v, 1)| at each sample of each pixel (SIZE x SIZE x SAMPLES^2): the ordered grid puts
+    sample (i, j) of pixel (r, c) at (c + (j + 0.5) / SAMPLES, r + (i + 0.5) / SAMPLES) in this
+    contract's pixel coordinates (centres at +0.5), so u = c + (j + 0.5) / SAMPLES - 0.5 in OpenCV's."""
+    offsets = (np.arange(SAMPLES) + 0.5) / SAMPLES - 0.5
+    dy, dx = np.meshgrid(offsets, offsets, indexing="ij")
+    rows, columns = np.meshgrid(np.arange(SIZE, dtype=float), np.arange(SIZE, dtype=float), indexing="ij")
+    u = columns[:, :, None] + dx.ravel()
+    v = rows[:, :, None] + dy.ravel()
+    rays = np.stack([u, v, np.ones_like(u)], axis=-1) @ np.linalg.inv(K).T
+    return np.linalg.norm(rays, axis=-1)
+
+
+def inverse_depth_gradients(column, row, depth, triangles):
+    """Per triangle, the gradient (d/du, d/dv) of 1/z_c over the image in pixels: 1/z_c is affine in
+    screen space on a triangle, so this is exact. Infinite for a triangle seen edge-on."""
+    A = np.stack([column[triangles], row[triangles], np.ones(triangles.shape)], axis=-1)  # m x 3 x 3
+    w = 1.0 / depth[triangles]
+    gradients = np.full((len(triangles), 2), np.inf)
+    solvable = np.abs(np.linalg.det(A)) > 1e-9
+    gradients[solvable] = np.linalg.solve(A[solvable], w[solvable])[:, :2]
+    return gradients
+
+
+def test_depth_and_distance_files_hold_the_projected_vertices_z_and_distance(dataset):
+    """Where a vertex lands, and a triangle of that vertex paints its pixel (the id file), the depth
+    there is the vertex's z_c and the distance |camera centre - vertex|, within what the surface's
+    slope allows between the vertex and the pixel's nearest sample:
+
+      the vertex lies in its pixel (|du|, |dv| <= 1/2 from the centre), the sample within 3/8 of it
+      (4 x 4 samples), and the rasterizer snaps corners to 1/256 sample (1/2048 pixel); 1/z_c is
+      affine on the triangle with gradient g, so |1/depth - 1/z_v| <= (|g_u| + |g_v|) (7/8 + 1/2048)
+      + 1e-5 / z_v (float rounding). For the distance d = depth f_s (f_s = |K^-1 (u, v, 1)| at the
+      sample, one of the pixel's 16) against z_v f_v:
+      |distance - |C - X_v|| <= |depth - z_v| max f_s + z_v max |f_s - f_v| + 1e-6 |C - X_v|.
+
+    Every view must check at least a tenth of the mesh's vertices, so the selection cannot leave the
+    test nothing to check. Everywhere on the silhouette distance / depth is, to float rounding, the
+    ray length at one of the pixel's samples (the nearest covered one), computed from K alone."""
+    mesh, folder = dataset
+    cameras = json.loads((folder / "cameras.json").read_text())
+    positions, triangles = read_obj(mesh)
+    worst_depth = worst_distance = 0.0  # the largest error as a fraction of its tolerance
+    fewest = len(positions)
+    for view, image in enumerate(cameras["images"]):
+        K = np.array(image["K"])
+        world_to_camera = np.array(image["world_to_camera"])
+        depth = read_float_exr(folder / f"{view:02d}.depth.exr")
+        distance = read_float_exr(folder / f"{view:02d}.distance.exr")
+        mask = phongrast.read_image(str(folder / f"{view:02d}.mask.png"))[:, :, 0]
+        ids = np.rint(phongrast.read_image(str(folder / f"{view:02d}.id.png"))[:, :, 0] * 65535).astype(int)
+        assert depth.shape == distance.shape == (SIZE, SIZE)
+
+        # The silhouette: finite depth and distance exactly where the mask is not zero, +inf elsewhere.
+        covered = mask > 0
+        assert np.array_equal(np.isfinite(depth), covered) and np.array_equal(np.isfinite(distance), covered)
+        assert np.all(np.isposinf(depth[~covered])) and np.all(np.isposinf(distance[~covered]))
+        # distance / depth: the ray length of one of the pixel's samples, to float rounding.
+        lengths = sample_ray_lengths(K)[covered]  # pixels x 16
+        ratio = distance[covered] / depth[covered]
+        mismatch = np.min(np.abs(lengths - ratio[:, None]), axis=1) / ratio
+        assert mismatch.max() <= 1e-6, f"view {view}: distance / depth off every sample's ray by {mismatch.max()}"
+
+        # The vertices seen at their own pixel.
+        column, row, z = project(K, world_to_camera, positions)
+        c, r = np.rint(column).astype(int), np.rint(row).astype(int)
+        inside = (c >= 0) & (c < SIZE) & (r >= 0) & (r < SIZE) & (z > 0)
+        vertex = np.nonzero(inside)[0]
+        c, r = c[vertex], r[vertex]
+        painter = ids[r, c] - 1
+        gradients = inverse_depth_gradients(column, row, z, triangles)
+        own = (painter >= 0) & (triangles[np.maximum(painter, 0)] == vertex[:, None]).any(axis=1)
+        own &= np.isfinite(gradients[np.maximum(painter, 0)]).all(axis=1)
+        vertex, c, r, g = vertex[own], c[own], r[own], gradients[painter[own]]
+        assert len(vertex) >= len(np.unique(triangles)) // 10, f"view {view}: only {len(vertex)} vertices checked"
+        fewest = min(fewest, len(vertex))
+
+        z_v = z[vertex]
+        tolerance = np.abs(g).sum(axis=1) * (7 / 8 + 1 / 2048) + 1e-5 / z_v
+        error = np.abs(1.0 / depth[r, c] - 1.0 / z_v)
+        assert (error <= tolerance).all(), f"view {view}: depth off at {np.count_nonzero(error > tolerance)} vertices"
+        worst_depth = max(worst_depth, (error / tolerance).max())
+
+        centre = -world_to_camera[:3, :3].T @ world_to_camera[:3, 3]
+        euclidean = np.linalg.norm(positions[vertex] - centre, axis=1)
+        f_v = euclidean / z_v  # |K^-1 (u, v, 1)| at the vertex
+        f_s = sample_ray_lengths(K)[r, c]  # vertices x 16
+        depth_bound = depth[r, c] * z_v * tolerance
+        allowed = (depth_bound * f_s.max(axis=1) + z_v * np.abs(f_s - f_v[:, None]).max(axis=1) +
+                   1e-6 * euclidean)
+        error = np.abs(distance[r, c] - euclidean)
+        assert (error <= allowed).all(), f"view {view}: distance off at {np.count_nonzero(error > allowed)} vertices"
+        worst_distance = max(worst_distance, (error / allowed).max())
+    print(f"fewest vertices checked in a view: {fewest}; "
+          f"largest error / tolerance: depth {worst_depth:.3f}, distance {worst_distance:.3f}")
 
 
 def test_job_camera_files_refuse_what_they_cannot_hold(tmp_path):

@@ -16,9 +16,10 @@ namespace phongrast::io {
 
 /// One multi-channel EXR: R, G, B (linear float, as write_image), then
 /// whichever planes `aovs` holds: A (alpha), Z (camera depth, +inf on the
-/// background), N.X, N.Y, N.Z (world-space unit normal), id (32-bit unsigned
-/// integer channel holding the triangle index; the background's -1 is
-/// stored as 4294967295). Written to a temporary file and renamed, like
+/// background), distance (from the eye, +inf on the background), N.X, N.Y,
+/// N.Z (world-space unit normal), uv.s, uv.t (texture coordinates), id
+/// (32-bit unsigned integer channel holding the triangle index; the
+/// background's -1 is stored as 4294967295). Written to a temporary file and renamed, like
 /// write_image. Throws FileError (also for a path not ending in .exr).
 void write_exr_with_aovs(const Image& image, const AovPlanes& aovs, const std::string& path);
 

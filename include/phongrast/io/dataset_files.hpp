@@ -3,13 +3,15 @@
 //
 //   NAME.depth.exr    camera depth z_c (along the optical axis, scene units), 32-bit float "Z", +inf = background
 //   NAME.depth.png    the same as 16-bit grey: round(z_c / depth_scale), at least 1; 0 = background
+//   NAME.distance.exr distance from the eye (scene units), 32-bit float "Z" as in NAME.depth.exr, +inf = background
+//                     (orthographic camera: from the image plane through the eye, = z_c; AovPlanes::distance)
 //   NAME.mask.png     8-bit grey: the pixel's covered fraction x 255
 //   NAME.id.png       16-bit grey: triangle index + 1; 0 = background
 //   NAME.normal.png   8-bit RGB: (n + 1) / 2 of the unit WORLD-space shading normal; 0,0,0 = background
 //   NAME.object.png   16-bit grey: object index + 1 (scenes of several objects); 0 = background
 //
-// NAME is the colour image's path without its extension. Depth, id, normal
-// and object come from one sample per pixel, never blended across an edge
+// NAME is the colour image's path without its extension. Depth, distance, id,
+// normal and object come from one sample per pixel, never blended across an edge
 // (with supersampling, the pixel's nearest covered sample: AovPlanes).
 #ifndef PHONGRAST_IO_DATASET_FILES_HPP
 #define PHONGRAST_IO_DATASET_FILES_HPP
@@ -33,16 +35,18 @@ struct DatasetFiles {
     bool id = false;
     bool normal = false;
     bool object = false;
+    bool distance = false;  ///< NAME.distance.exr
 
-    bool any() const { return depth || depth16 || mask || id || normal || object; }
+    bool any() const { return depth || depth16 || mask || id || normal || object || distance; }
     /// The extra planes the render must fill for these files.
     AovRequest planes() const;
     /// Adds planes() to what `aovs` already asks for.
     void add_planes_to(AovRequest& aovs) const;
 };
 
-/// "depth,depth16,mask,id,normal,object" (any subset, comma-separated);
-/// "all" among them stands for depth, mask, id, normal and object. Throws std::invalid_argument
+/// "depth,depth16,mask,id,normal,object,distance" (any subset, comma-separated);
+/// "all" among them stands for depth, mask, id, normal, object and distance
+/// (everything but depth16). Throws std::invalid_argument
 /// naming an unknown entry and listing the valid ones.
 DatasetFiles parse_dataset_files(std::string_view text);
 std::string to_string(const DatasetFiles& files);
