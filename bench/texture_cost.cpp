@@ -10,10 +10,12 @@
 // cores phongrast uses. Prints one Markdown row per contender: median
 // milliseconds, the ratio to phongrast untextured, and to llvmpipe on the
 // same scene. `bench_texture_cost SHADER profile CONTENDER` (untextured,
-// bilinear or nearest) renders that one contender 30 times and prints nothing,
-// for a profiler (perf record -g) to see it alone.
+// bilinear or nearest) renders that one contender 30 times, for a profiler
+// (perf record -g) to see it alone, and prints a hash of its picture's bits,
+// so that a change meant to keep every bit can be checked against the last.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -116,7 +118,14 @@ int main(int argc, char** argv) {
                              : profiled == "bilinear" ? bilinear_renderer
                                                       : nearest_renderer;
         const Scene& scene = profiled == "untextured" ? plain : with_texture;
-        for (int i = 0; i < 30; ++i) renderer.render(scene);
+        const RenderResult* result = nullptr;
+        for (int i = 0; i < 30; ++i) result = &renderer.render(scene);
+        std::uint64_t hash = 14695981039346656037ull;  // FNV-1a over the pixels' bytes
+        const auto* bytes = reinterpret_cast<const unsigned char*>(result->image.pixels.data());
+        for (std::size_t i = 0; i < result->image.pixels.size() * sizeof(glm::vec3); ++i) {
+            hash = (hash ^ bytes[i]) * 1099511628211ull;
+        }
+        std::printf("%s %s: picture hash %016llx\n", argv[1], argv[3], static_cast<unsigned long long>(hash));
         return 0;
     }
     std::vector<std::string> names = {"phongrast untextured", "phongrast textured, bilinear",
