@@ -125,7 +125,9 @@ int main(int argc, char** argv) {
         for (std::size_t i = 0; i < result->image.pixels.size() * sizeof(glm::vec3); ++i) {
             hash = (hash ^ bytes[i]) * 1099511628211ull;
         }
-        std::printf("%s %s: picture hash %016llx\n", argv[1], argv[3], static_cast<unsigned long long>(hash));
+        std::printf("%s %s: picture hash %016llx, %llu samples covered, %llu shaded\n", argv[1], argv[3],
+                    static_cast<unsigned long long>(hash), static_cast<unsigned long long>(result->stats.samples_covered),
+                    static_cast<unsigned long long>(result->stats.samples_shaded));
         return 0;
     }
     std::vector<std::string> names = {"phongrast untextured", "phongrast textured, bilinear",
