@@ -123,7 +123,7 @@ inline long long wrap_texel(long long index, long long size, TextureWrap wrap) {
 /// AlwaysWrap: every index through fmod and wrap_texel(), even inside the
 /// image (the fast path's reference, for tests/test_texture_lookup.cpp).
 template <typename Real, bool AlwaysWrap = false>
-inline Vec3<Real> texture_at(const KernelTexture& texture, Real s, Real t) {
+PHONGRAST_FILL_INLINE Vec3<Real> texture_at(const KernelTexture& texture, Real s, Real t) {
     const Real x = s * Real(texture.columns) - Real(0.5);
     const Real y = (Real(1) - t) * Real(texture.rows) - Real(0.5);
     if (!std::isfinite(x) || !std::isfinite(y)) return Vec3<Real>(Real(1));
