@@ -9,9 +9,13 @@
 // painter's sort; Gouraud and Phong only), with LP_NUM_THREADS set to the
 // cores phongrast uses. Prints one Markdown row per contender: median
 // milliseconds, the ratio to phongrast untextured, and to llvmpipe on the
-// same scene.
+// same scene. `bench_texture_cost SHADER profile CONTENDER` (untextured,
+// bilinear or nearest) renders that one contender 30 times, for a profiler
+// (perf record -g) to see it alone, and prints a hash of its picture's bits,
+// so that a change meant to keep every bit can be checked against the last.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -62,6 +66,18 @@ Scene sphere_scene(const Mesh& mesh, Shader shader) {
 
 int main(int argc, char** argv) {
     Shader shader = Shader::phong;
+    std::string profiled;  // a contender rendered alone, for a profiler
+    if (argc == 4 && std::string(argv[2]) == "profile") {
+        profiled = argv[3];
+        if (profiled != "untextured" && profiled != "bilinear" && profiled != "nearest") {
+            std::fprintf(stderr, "bench_texture_cost: unknown contender '%s' (expected untextured, bilinear or nearest)\n",
+                         argv[3]);
+            return 2;
+        }
+    } else if (argc > 2) {
+        std::fprintf(stderr, "usage: bench_texture_cost [phong|gouraud|flat] [profile untextured|bilinear|nearest]\n");
+        return 2;
+    }
     if (argc > 1) {
         const std::string name = argv[1];
         if (name == "gouraud") {
@@ -97,6 +113,23 @@ int main(int argc, char** argv) {
     const auto timed = [](Renderer& renderer, const Scene& scene) {
         return [&renderer, &scene] { return support::time_ms([&] { renderer.render(scene); }); };
     };
+    if (!profiled.empty()) {
+        Renderer& renderer = profiled == "untextured" ? untextured_renderer
+                             : profiled == "bilinear" ? bilinear_renderer
+                                                      : nearest_renderer;
+        const Scene& scene = profiled == "untextured" ? plain : with_texture;
+        const RenderResult* result = nullptr;
+        for (int i = 0; i < 30; ++i) result = &renderer.render(scene);
+        std::uint64_t hash = 14695981039346656037ull;  // FNV-1a over the pixels' bytes
+        const auto* bytes = reinterpret_cast<const unsigned char*>(result->image.pixels.data());
+        for (std::size_t i = 0; i < result->image.pixels.size() * sizeof(glm::vec3); ++i) {
+            hash = (hash ^ bytes[i]) * 1099511628211ull;
+        }
+        std::printf("%s %s: picture hash %016llx, %llu samples covered, %llu shaded\n", argv[1], argv[3],
+                    static_cast<unsigned long long>(hash), static_cast<unsigned long long>(result->stats.samples_covered),
+                    static_cast<unsigned long long>(result->stats.samples_shaded));
+        return 0;
+    }
     std::vector<std::string> names = {"phongrast untextured", "phongrast textured, bilinear",
                                       "phongrast textured, nearest"};
     std::vector<std::function<double()>> contenders = {timed(untextured_renderer, plain),

@@ -123,8 +123,10 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     plan.effects = effects;
     plan.depth_test = options.visibility == Visibility::depth_buffer;
     plan.shade_visible_only = !plan.depth_test && overdraw_shades_visible_only(scene, options, effects);
-    // A texture lookup per sample costs more than the second coverage pass too.
-    if (textures != nullptr && options.overdraw == Overdraw::automatic && scene.shader == Shader::phong) {
+    // A texture lookup per sample costs more than the second coverage pass too,
+    // in every shader (bench_texture_cost: Gouraud and flat interpolate (s, t)
+    // and read four texels per sample, most of their per-sample work).
+    if (textures != nullptr && options.overdraw == Overdraw::automatic) {
         plan.shade_visible_only = !plan.depth_test;
     }
     // Gouraud is left out: its kernel interpolates three equal corner colours

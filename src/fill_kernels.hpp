@@ -214,27 +214,6 @@ void fill_lit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVec
     fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
 }
 
-/// Gouraud on a textured face (contract "Texture maps"): A and S lit at the
-/// corners and interpolated, the pixel T x A + S, with T at the sample's
-/// (s, t) interpolated alike. Set-up put A in the draw's lit[i], S in the
-/// corners' `color` and (s, t) in their `lit`. A face without a texture
-/// carries its whole lit colour in lit[i] and is filled as fill_lit() fills it.
-template <typename Real, bool Perspective>
-void fill_lit_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
-                       const FillSetup<Real>& setup) {
-    const KernelTexture& texture = setup.textures[draw.surface];
-    if (texture.texels == nullptr) {
-        fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
-        return;
-    }
-    fill_samples<Real, Perspective>(draw, target, [&](const Real* w) {
-        const Real s = (w[0] * draw.v[0]->lit[0] + w[1] * draw.v[1]->lit[0]) + w[2] * draw.v[2]->lit[0];
-        const Real t = (w[0] * draw.v[0]->lit[1] + w[1] * draw.v[1]->lit[1]) + w[2] * draw.v[2]->lit[1];
-        const Vec3<Real> specular = w[0] * draw.v[0]->color + w[1] * draw.v[1]->color + w[2] * draw.v[2]->color;
-        return texture_at<Real>(texture, s, t) * interpolate_lit(draw, w) + specular;
-    });
-}
-
 /// Flat: the triangle's one colour, written as is. (Interpolating it like
 /// Gouraud would give weights summing to 1 only up to rounding, so the colour
 /// would wander by an ulp across the triangle.)
@@ -242,24 +221,6 @@ template <typename Real, bool Perspective>
 void fill_flat(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
                const FillSetup<Real>&) {
     fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
-}
-
-/// Flat on a textured face: the triangle's colour-carrying part A (lit[0])
-/// times T at the sample, plus its specular part S (lit[1]). A face without
-/// a texture writes its one colour as fill_flat() does (set-up put it in lit[0]).
-template <typename Real, bool Perspective>
-void fill_flat_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
-                        const FillSetup<Real>& setup) {
-    const KernelTexture& texture = setup.textures[draw.surface];
-    if (texture.texels == nullptr) {
-        fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
-        return;
-    }
-    fill_samples<Real, Perspective>(draw, target, [&](const Real* w) {
-        const Real s = (w[0] * draw.v[0]->lit[0] + w[1] * draw.v[1]->lit[0]) + w[2] * draw.v[2]->lit[0];
-        const Real t = (w[0] * draw.v[0]->lit[1] + w[1] * draw.v[1]->lit[1]) + w[2] * draw.v[2]->lit[1];
-        return texture_at<Real>(texture, s, t) * draw.lit[0] + draw.lit[1];
-    });
 }
 
 /// Visits the triangle's covered samples in the target's rows, gathering up
@@ -321,6 +282,71 @@ void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& targe
         }
     });
     if (n > 0) flush();
+}
+
+/// Gouraud on a textured face, n samples at a time (structure of arrays, as
+/// shade_phong_batch() shades): (s, t), S and A interpolated in vector
+/// loops, then T x A + S lane by lane. Per lane the same operations in the
+/// same order as one sample at a time: (w0 a + w1 b) + w2 c for each
+/// attribute, T[c] * A[c] + S[c].
+template <typename Real>
+PHONGRAST_FILL_INLINE void shade_lit_textured_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w,
+                                                    const KernelTexture& texture, Lanes<Real>* out) {
+    Lanes<Real> s, t, specular[3];
+    interpolate_lanes(n, w, draw.v[0]->lit[0], draw.v[1]->lit[0], draw.v[2]->lit[0], s);
+    interpolate_lanes(n, w, draw.v[0]->lit[1], draw.v[1]->lit[1], draw.v[2]->lit[1], t);
+    for (int c = 0; c < 3; ++c) {
+        interpolate_lanes(n, w, draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], specular[c]);
+        interpolate_lanes(n, w, draw.lit[0][c], draw.lit[1][c], draw.lit[2][c], out[c]);  // A
+    }
+    for (int l = 0; l < n; ++l) {
+        const Vec3<Real> texel = texture_at<Real>(texture, s[l], t[l]);
+        for (int c = 0; c < 3; ++c) out[c][l] = texel[c] * out[c][l] + specular[c][l];
+    }
+}
+
+/// Gouraud on a textured face (contract "Texture maps"): A and S lit at the
+/// corners and interpolated, the pixel T x A + S, with T at the sample's
+/// (s, t) interpolated alike. Set-up put A in the draw's lit[i], S in the
+/// corners' `color` and (s, t) in their `lit`. The samples go through in
+/// batches (fill_sample_batches(): the same weights and depths as
+/// fill_samples() computes). A face without a texture carries its whole lit
+/// colour in lit[i] and is filled as fill_lit() fills it.
+template <typename Real, bool Perspective>
+void fill_lit_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+                       const FillSetup<Real>& setup) {
+    const KernelTexture& texture = setup.textures[draw.surface];
+    if (texture.texels == nullptr) {
+        fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
+        return;
+    }
+    fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
+        shade_lit_textured_lanes(draw, n, w, texture, out);
+    });
+}
+
+/// Flat on a textured face: the triangle's colour-carrying part A (lit[0])
+/// times T at the sample, plus its specular part S (lit[1]); in batches, as
+/// fill_lit_textured() goes, with (s, t) interpolated in vector loops and
+/// per lane T[c] * A[c] + S[c], as one sample at a time. A face without a
+/// texture writes its one colour as fill_flat() does (set-up put it in lit[0]).
+template <typename Real, bool Perspective>
+void fill_flat_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+                        const FillSetup<Real>& setup) {
+    const KernelTexture& texture = setup.textures[draw.surface];
+    if (texture.texels == nullptr) {
+        fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
+        return;
+    }
+    fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
+        Lanes<Real> s, t;
+        interpolate_lanes(n, w, draw.v[0]->lit[0], draw.v[1]->lit[0], draw.v[2]->lit[0], s);
+        interpolate_lanes(n, w, draw.v[0]->lit[1], draw.v[1]->lit[1], draw.v[2]->lit[1], t);
+        for (int l = 0; l < n; ++l) {
+            const Vec3<Real> texel = texture_at<Real>(texture, s[l], t[l]);
+            for (int c = 0; c < 3; ++c) out[c][l] = texel[c] * draw.lit[0][c] + draw.lit[1][c];
+        }
+    });
 }
 
 /// Phong compiled for one effect set. Without diffuse or specular it interpolates no normal.

@@ -120,32 +120,53 @@ inline long long wrap_texel(long long index, long long size, TextureWrap wrap) {
 /// T(s, t) in Real: the contract's bilinear lookup (as sample_bilinear()
 /// computes it in double, in the same order), or the nearest texel.
 /// Coordinates too large for Real give T = 1: nothing non-finite reaches a pixel.
-template <typename Real>
-inline Vec3<Real> texture_at(const KernelTexture& texture, Real s, Real t) {
+/// AlwaysWrap: every index through fmod and wrap_texel(), even inside the
+/// image (the fast path's reference, for tests/test_texture_lookup.cpp).
+template <typename Real, bool AlwaysWrap = false>
+PHONGRAST_FILL_INLINE Vec3<Real> texture_at(const KernelTexture& texture, Real s, Real t) {
     const Real x = s * Real(texture.columns) - Real(0.5);
     const Real y = (Real(1) - t) * Real(texture.rows) - Real(0.5);
     if (!std::isfinite(x) || !std::isfinite(y)) return Vec3<Real>(Real(1));
     const long long columns = texture.columns, rows = texture.rows;
-    // Reduced modulo twice the size first, so that no index overflows (every wrap has that period).
-    const auto reduce = [](Real index, long long size) {
-        return static_cast<long long>(std::fmod(index, Real(2) * static_cast<Real>(size)));
-    };
     const auto texel = [&](long long i, long long j) {
         return Vec3<Real>(texture.texels[static_cast<std::size_t>(i) * static_cast<std::size_t>(columns) +
                                          static_cast<std::size_t>(j)]);
     };
+    // Reduced modulo twice the size first, so that no index overflows (every wrap has that period).
+    const auto reduce = [](Real index, long long size) {
+        return static_cast<long long>(std::fmod(index, Real(2) * static_cast<Real>(size)));
+    };
+    // An index in [0, last] is its own reduction and every wrap mode leaves
+    // it as it is, so where all the texels read lie inside the image (most
+    // samples) the indices are the floors themselves: no fmod, no wrap.
+    // (A limit past 2^24 might round in float: such images take the general path.)
+    const auto inside = [](Real index, long long last) {
+        return !AlwaysWrap && last < (1ll << 24) && index >= Real(0) && index <= static_cast<Real>(last);
+    };
     if (texture.filter == TextureFilter::nearest) {
         // The texel whose area holds (s W, (1 - t) H): floor(x + 1/2).
-        const long long j = wrap_texel(reduce(std::floor(x + Real(0.5)), columns), columns, texture.wrap_s);
-        const long long i = wrap_texel(reduce(std::floor(y + Real(0.5)), rows), rows, texture.wrap_t);
+        const Real j_nearest = std::floor(x + Real(0.5)), i_nearest = std::floor(y + Real(0.5));
+        if (inside(j_nearest, columns - 1) && inside(i_nearest, rows - 1)) {
+            return texel(static_cast<long long>(i_nearest), static_cast<long long>(j_nearest));
+        }
+        const long long j = wrap_texel(reduce(j_nearest, columns), columns, texture.wrap_s);
+        const long long i = wrap_texel(reduce(i_nearest, rows), rows, texture.wrap_t);
         return texel(i, j);
     }
     const Real j_floor = std::floor(x), i_floor = std::floor(y);
     const Real a = x - j_floor, b = y - i_floor;
-    const long long j0 = wrap_texel(reduce(j_floor, columns), columns, texture.wrap_s);
-    const long long j1 = wrap_texel(reduce(j_floor, columns) + 1, columns, texture.wrap_s);
-    const long long i0 = wrap_texel(reduce(i_floor, rows), rows, texture.wrap_t);
-    const long long i1 = wrap_texel(reduce(i_floor, rows) + 1, rows, texture.wrap_t);
+    long long j0, j1, i0, i1;
+    if (inside(j_floor, columns - 2) && inside(i_floor, rows - 2)) {
+        j0 = static_cast<long long>(j_floor);
+        i0 = static_cast<long long>(i_floor);
+        j1 = j0 + 1;
+        i1 = i0 + 1;
+    } else {
+        j0 = wrap_texel(reduce(j_floor, columns), columns, texture.wrap_s);
+        j1 = wrap_texel(reduce(j_floor, columns) + 1, columns, texture.wrap_s);
+        i0 = wrap_texel(reduce(i_floor, rows), rows, texture.wrap_t);
+        i1 = wrap_texel(reduce(i_floor, rows) + 1, rows, texture.wrap_t);
+    }
     const Real one = Real(1);
     return (one - a) * (one - b) * texel(i0, j0) + a * (one - b) * texel(i0, j1) + (one - a) * b * texel(i1, j0) +
            a * b * texel(i1, j1);

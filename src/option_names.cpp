@@ -58,7 +58,7 @@ std::vector<Entry> make_entries() {
     entries.push_back(enum_entry<Overdraw>(
         {"overdraw", {{"auto"}, {"all"}, {"visible"}}, "auto",
          "Painter's order: all shades every sample of every triangle; visible shades only the samples left "
-         "visible; auto picks visible for per-pixel lighting (the picture does not change)"},
+         "visible; auto picks visible for per-pixel lighting and textured scenes (the picture does not change)"},
         &RenderOptions::overdraw, {Overdraw::automatic, Overdraw::shade_all, Overdraw::shade_visible}));
     entries.push_back(enum_entry<Precision>(
         {"precision", {{"single"}, {"double"}}, "single", "Arithmetic of the fill: single or double precision"},

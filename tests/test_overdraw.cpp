@@ -1,14 +1,17 @@
 // Overdraw::shade_visible (shade only the samples a triangle paints last)
 // against Overdraw::shade_all (the classic painter's fill): the same image bit
 // for bit, the same coverage, and fewer samples shaded wherever triangles
-// overlap; Overdraw::automatic picks shade_visible for per-pixel lighting only.
+// overlap; Overdraw::automatic picks shade_visible for per-pixel lighting and
+// for textured scenes (a texture lookup per sample), in every shader.
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <string>
 
 #include <catch2/catch.hpp>
 
 #include "phongrast/render.hpp"
+#include "phongrast/texture.hpp"
 #include "test_meshes.hpp"
 #include "test_render_modes.hpp"
 
@@ -51,6 +54,31 @@ Scene random_scene(std::uint32_t seed) {
     return scene;
 }
 
+/// random_scene() with (s, t) at every vertex (some outside [0, 1]) and a
+/// random texture on the torus's faces, each axis its own wrap mode; the
+/// soup's faces have no material: textured and untextured faces mixed.
+Scene textured_scene(std::uint32_t seed, TextureWrap wrap_s, TextureWrap wrap_t) {
+    Scene scene = random_scene(seed);
+    std::mt19937 random(seed + 100);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-0.5f, 1.5f);
+    auto image = std::make_shared<TextureImage>();
+    image->rows = 5;
+    image->columns = 7;
+    image->name = "random";
+    for (int k = 0; k < image->rows * image->columns; ++k) image->texels.push_back({unit(random), unit(random), unit(random)});
+    Mesh& mesh = scene.mesh;
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) mesh.texcoords.push_back({coordinate(random), coordinate(random)});
+    mesh.texcoord_triangles = mesh.triangles;
+    FaceMaterial material;
+    material.name = "textured";
+    material.texture = TextureMap{image, wrap_s, wrap_t};
+    mesh.materials = {material};
+    const std::size_t torus_triangles = mesh.triangles.size() - 40;
+    mesh.face_materials.assign(mesh.triangles.size(), kNoIndex);
+    std::fill(mesh.face_materials.begin(), mesh.face_materials.begin() + static_cast<std::ptrdiff_t>(torus_triangles), 0u);
+    return scene;
+}
+
 RenderOptions with_overdraw(RenderOptions options, Overdraw overdraw) {
     options.overdraw = overdraw;
     return options;
@@ -75,6 +103,32 @@ TEST_CASE("shade_visible paints the same image as shade_all, bit for bit, in eve
                 CHECK(visible.stats.samples_shaded == count_written(visible.image));
                 CHECK(visible.stats.samples_shaded < all.stats.samples_shaded);
                 CHECK(visible.stats.nonfinite_values_replaced == 0);
+            }
+        }
+    }
+}
+
+TEST_CASE("textured scenes: shade_visible paints shade_all's image bit for bit, and automatic picks it") {
+    const TextureWrap wraps[] = {TextureWrap::repeat, TextureWrap::clamp_to_edge, TextureWrap::mirrored_repeat};
+    for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+        Scene scene = textured_scene(seed, wraps[seed % 3], wraps[(seed + 1) % 3]);
+        for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+            scene.shader = shader;
+            for (TextureFilter filter : {TextureFilter::bilinear, TextureFilter::nearest}) {
+                for (test_render_modes::RenderMode mode : test_render_modes::preset_precision_kernel_modes()) {
+                    mode.options.threads = 1 + static_cast<int>(seed % 2);
+                    mode.options.texture_filter = filter;
+                    const RenderResult all = render(scene, with_overdraw(mode.options, Overdraw::shade_all));
+                    const RenderResult visible = render(scene, with_overdraw(mode.options, Overdraw::shade_visible));
+                    const RenderResult automatic = render(scene, with_overdraw(mode.options, Overdraw::automatic));
+                    INFO("seed " << seed << ", " << to_string(shader) << ", " << to_string(filter) << ", " << mode.name);
+                    CHECK(same_bits(all.image, visible.image));
+                    CHECK(same_bits(all.image, automatic.image));
+                    CHECK(visible.stats.samples_shaded == count_written(visible.image));
+                    CHECK(visible.stats.samples_shaded < all.stats.samples_shaded);
+                    CHECK(automatic.stats.samples_shaded == visible.stats.samples_shaded);
+                    CHECK(visible.stats.nonfinite_values_replaced == 0);
+                }
             }
         }
     }
@@ -144,7 +198,7 @@ TEST_CASE("shade_visible: a triangle painted over entirely costs no shading, and
     CHECK(centre.z == 0.0f);  // red, not blue
 }
 
-TEST_CASE("automatic overdraw: only Phong with diffuse or specular light shades the visible samples alone") {
+TEST_CASE("automatic overdraw, untextured: only Phong with diffuse or specular light shades the visible samples alone") {
     Scene scene = random_scene(3);
     struct Case {
         Shader shader;

@@ -66,8 +66,8 @@ enum class Overdraw {
                     ///< (coverage only), then shade just those samples: one shading per sample
                     ///< for a second coverage pass
     automatic,      ///< shade_visible where shading costs more than that second pass (Phong
-                    ///< with diffuse or specular light: measured in docs/performance.md),
-                    ///< shade_all elsewhere
+                    ///< with diffuse or specular light, and every shader on a textured
+                    ///< scene: measured in docs/performance.md), shade_all elsewhere
 };
 enum class Precision { single_float, double_float };
 /// Where the samples_per_axis^2 samples of a pixel lie (box-filtered either way).
