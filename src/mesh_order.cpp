@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "resize_polling.hpp"
 #include "scene_analysis.hpp"
 
 namespace phongrast::detail {
@@ -19,12 +20,15 @@ constexpr std::size_t kGatherBlock = 16384;
 
 /// out[i] = in[source[i]] for every i, in parallel; `out` resized (its memory reused).
 template <typename T>
-void gather(const std::vector<T>& in, const std::vector<std::uint32_t>& source, std::vector<T>& out) {
+void gather(const std::vector<T>& in, const std::vector<std::uint32_t>& source, std::vector<T>& out,
+            const std::function<void()>& poll) {
     if (in.empty()) {
         out.clear();
         return;
     }
-    out.resize(source.size());
+    resize_polling(out, source.size(), [&poll] {
+        if (poll) poll();
+    });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, source.size(), kGatherBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) out[i] = in[source[i]];
@@ -35,7 +39,7 @@ void gather(const std::vector<T>& in, const std::vector<std::uint32_t>& source, 
 /// their triangles; the values they index stay where they are.
 void gather_corner_indices(const std::vector<Triangle>& in, const std::vector<std::uint32_t>& source,
                            std::vector<Triangle>& out) {
-    gather(in, source, out);
+    gather(in, source, out, nullptr);
 }
 
 /// Cells per axis of the spatial sort's grid.
@@ -234,15 +238,15 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
     copy_all_but_mesh(scene, order.scene);
     Mesh& out = order.scene.mesh;
     report();
-    gather(mesh.positions, order.vertex_source, out.positions);
-    gather(mesh.colors, order.vertex_source, out.colors);
+    gather(mesh.positions, order.vertex_source, out.positions, poll);
+    gather(mesh.colors, order.vertex_source, out.colors, poll);
     report();
     if (needs_computed_normals(scene, options)) {
         calculate_normals_into(mesh.positions, mesh.triangles, order.normals_scratch, order.normals, poll);
         report();
-        gather(order.normals, order.vertex_source, out.normals);
+        gather(order.normals, order.vertex_source, out.normals, poll);
     } else {
-        gather(mesh.normals, order.vertex_source, out.normals);
+        gather(mesh.normals, order.vertex_source, out.normals, poll);
     }
     out.triangles.resize(mesh.triangles.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.triangles.size(), kGatherBlock),
@@ -259,7 +263,7 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
     out.file_normals = mesh.file_normals;
     gather_corner_indices(mesh.file_normal_triangles, order.triangle_source, out.file_normal_triangles);
     out.materials = mesh.materials;
-    gather(mesh.face_materials, order.triangle_source, out.face_materials);
+    gather(mesh.face_materials, order.triangle_source, out.face_materials, poll);
     return order.scene;
 }
 

@@ -14,6 +14,7 @@
 #include "normals_scratch.hpp"
 #include "phongrast/lighting.hpp"
 #include "phongrast/mesh.hpp"
+#include "resize_polling.hpp"
 
 namespace phongrast {
 namespace detail {
@@ -31,17 +32,21 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
                             const std::function<void()>& poll) {
     constexpr std::size_t kBlock = 16384;
     const std::size_t vertex_count = positions.size(), triangle_count = triangles.size();
+    // New scratch memory is filled with polls in between (resize_polling.hpp).
+    const auto report = [&poll] {
+        if (poll) poll();
+    };
     std::vector<glm::dvec3>& sums = scratch.sums;
-    sums.assign(vertex_count, glm::dvec3(0.0));
+    assign_polling(sums, vertex_count, glm::dvec3(0.0), report);
     // For the fallback: each vertex's largest adjacent face (twice its area) and unit normal.
     std::vector<double>& largest_area = scratch.largest_area;
-    largest_area.assign(vertex_count, 0.0);
+    assign_polling(largest_area, vertex_count, 0.0, report);
     std::vector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
-    largest_face_normal.assign(vertex_count, glm::dvec3(0.0));
-    if (poll) poll();
+    assign_polling(largest_face_normal, vertex_count, glm::dvec3(0.0), report);
+    report();
 
     std::vector<glm::dvec4>& faces = scratch.faces;  // cross product, twice the area (-1: not finite, skipped)
-    faces.resize(triangle_count);
+    resize_polling(faces, triangle_count, report);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangle_count, kBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t t = range.begin(); t != range.end(); ++t) {
@@ -64,6 +69,10 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
         const std::uint32_t first = static_cast<std::uint32_t>(range * vertex_count / ranges);
         const std::uint32_t end = static_cast<std::uint32_t>((range + 1) * vertex_count / ranges);
         for (std::size_t t = 0; t < triangle_count; ++t) {
+            // Each task walks every triangle (100-200 ms for 300k under load):
+            // poll inside, so a cancel (RenderCancelled from `poll`, on any
+            // thread) does not wait for the walks to end.
+            if (poll && t % kBlock == 0) poll();
             for (std::uint32_t vertex : triangles[t]) {
                 if (vertex < first || vertex >= end) continue;
                 const glm::dvec4& face = faces[t];

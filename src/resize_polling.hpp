@@ -29,6 +29,25 @@ void resize_polling(std::vector<T>& values, std::size_t size, const Poll& poll) 
     }
 }
 
+/// values.assign(size, value), the same way: when the vector must grow
+/// beyond its capacity (new pages), it is filled in steps with `poll()`
+/// between them; otherwise one assign (memory already touched is fast).
+template <typename T, typename Poll>
+void assign_polling(std::vector<T>& values, std::size_t size, const T& value, const Poll& poll) {
+    if (size <= values.capacity()) {
+        values.assign(size, value);
+        return;
+    }
+    values.clear();
+    values.reserve(size);
+    constexpr std::size_t kStepBytes = std::size_t(4) << 20;
+    const std::size_t step = std::max<std::size_t>(1, kStepBytes / sizeof(T));
+    while (values.size() < size) {
+        values.resize(std::min(size, values.size() + step), value);
+        poll();
+    }
+}
+
 }  // namespace phongrast::detail
 
 #endif  // PHONGRAST_SRC_RESIZE_POLLING_HPP

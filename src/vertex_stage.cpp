@@ -74,7 +74,10 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
         if (fill_in) keep_given_normals(mesh.normals, memory.normals);
     }
     const std::vector<glm::vec3>& normals = mesh.normals.empty() || fill_in ? memory.normals : mesh.normals;
-    const auto poll = [&progress] { progress.poll(); };
+    const auto poll = [&progress] {
+        progress.poll();
+        progress.throw_if_cancelled();
+    };
     resize_polling(out.screen, count, poll);
     resize_polling(out.varyings, count, poll);
     const CameraFrame& frame = view.frame;
