@@ -16,17 +16,24 @@ namespace {
 
 namespace support = phongrast::support;
 
-/// phongrast (exact, one thread) and llvmpipe on the same scene.
-support::ImageAgreement compare(const phongrast::Scene& scene) {
+/// phongrast (exact, one thread) on `ours` against llvmpipe on `theirs`
+/// (the same scene, or a deliberately different one for a negative control).
+support::ImageAgreement agreement_between(const phongrast::Scene& ours, const phongrast::Scene& theirs) {
     phongrast::RenderOptions options = phongrast::RenderOptions::exact();
     options.threads = 1;
-    const phongrast::Image ours = phongrast::render(scene, options).image;
+    const phongrast::Image image = phongrast::render(ours, options).image;
 
     support::LlvmpipeRenderer llvmpipe;
-    llvmpipe.load(scene);
+    llvmpipe.load(theirs);
     llvmpipe.draw();
-    const support::ImageAgreement agreement = support::agreement(ours, llvmpipe.image(), scene.image.background);
+    const support::ImageAgreement agreement = support::agreement(image, llvmpipe.image(), ours.image.background);
     INFO(llvmpipe.description() << ": " << support::summary(agreement));
+    return agreement;
+}
+
+/// phongrast and llvmpipe on the same scene, which must cover a quarter of the image.
+support::ImageAgreement compare(const phongrast::Scene& scene) {
+    const support::ImageAgreement agreement = agreement_between(scene, scene);
     CHECK(agreement.covered_in_both > agreement.pixels / 4);
     return agreement;
 }
@@ -151,18 +158,10 @@ TEST_CASE("phongrast exact and llvmpipe agree on a textured sphere through an Op
 
 TEST_CASE("the comparison notices a wrong picture") {
     // The same check must fail when the two sides really differ: here a light moved.
-    support::NamedScene named = support::icosphere_scene("small", 6, 64);
-    named.scene.shader = phongrast::Shader::phong;
-    phongrast::RenderOptions options = phongrast::RenderOptions::exact();
-    options.threads = 1;
-    const phongrast::Image ours = phongrast::render(named.scene, options).image;
-
-    named.scene.lights[0].position.x = -named.scene.lights[0].position.x;
-    support::LlvmpipeRenderer llvmpipe;
-    llvmpipe.load(named.scene);
-    llvmpipe.draw();
-    const support::ImageAgreement agreement =
-        support::agreement(ours, llvmpipe.image(), named.scene.image.background);
+    const phongrast::Scene scene = small_sphere(phongrast::Shader::phong);
+    phongrast::Scene moved = scene;
+    moved.lights[0].position.x = -moved.lights[0].position.x;
+    const support::ImageAgreement agreement = agreement_between(scene, moved);
     INFO(support::summary(agreement));
     CHECK(agreement.above_2 > agreement.pixels / 10);
 }
@@ -170,16 +169,9 @@ TEST_CASE("the comparison notices a wrong picture") {
 TEST_CASE("the comparison notices a texture read upside down") {
     // llvmpipe gets the texture with t flipped (t -> 1 - t): the pictures must differ.
     const phongrast::Scene scene = textured_sphere(phongrast::Shader::phong, phongrast::TextureWrap::clamp_to_edge);
-    phongrast::RenderOptions options = phongrast::RenderOptions::exact();
-    options.threads = 1;
-    const phongrast::Image ours = phongrast::render(scene, options).image;
-
     phongrast::Scene flipped = scene;
     for (glm::vec2& st : flipped.mesh.texcoords) st.y = 1.0f - st.y;
-    support::LlvmpipeRenderer llvmpipe;
-    llvmpipe.load(flipped);
-    llvmpipe.draw();
-    const support::ImageAgreement agreement = support::agreement(ours, llvmpipe.image(), scene.image.background);
+    const support::ImageAgreement agreement = agreement_between(scene, flipped);
     INFO(support::summary(agreement));
     CHECK(agreement.interior_above_8 > agreement.interior_pixels / 10);
 }
@@ -187,17 +179,10 @@ TEST_CASE("the comparison notices a texture read upside down") {
 TEST_CASE("the comparison notices an orthographic picture lit from a viewer at the eye") {
     // The same orthographic camera drawn as a look-at one moves every
     // silhouette pixel and the highlights: the check must see it.
-    phongrast::Scene scene = small_sphere(phongrast::Shader::phong);
+    const phongrast::Scene perspective = small_sphere(phongrast::Shader::phong);
+    phongrast::Scene scene = perspective;
     scene.camera = phongrast::Camera::orthographic(scene.camera.eye, scene.camera.lookat, scene.camera.up, 2.7, 2.7);
-    phongrast::RenderOptions options = phongrast::RenderOptions::exact();
-    options.threads = 1;
-    const phongrast::Image ours = phongrast::render(scene, options).image;
-
-    phongrast::Scene perspective = small_sphere(phongrast::Shader::phong);
-    support::LlvmpipeRenderer llvmpipe;
-    llvmpipe.load(perspective);
-    llvmpipe.draw();
-    const support::ImageAgreement agreement = support::agreement(ours, llvmpipe.image(), scene.image.background);
+    const support::ImageAgreement agreement = agreement_between(scene, perspective);
     INFO(support::summary(agreement));
     CHECK(agreement.above_2 > agreement.pixels / 10);
 }

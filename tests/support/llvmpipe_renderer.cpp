@@ -111,7 +111,8 @@ void main() { gl_FragColor = vec4(texel(v_texcoord, v_textured) * v_carried + v_
 )";
 
 // Phong: everything interpolated, the normal renormalised, c includes T.
-const char* const kPhongVertex = R"(
+// The varyings are declared alike in both stages (kPhongVaryings in front).
+const char* const kPhongVaryings = R"(
 varying vec3 v_position;
 varying vec3 v_normal;
 varying vec3 v_color;
@@ -120,6 +121,8 @@ varying vec3 v_ka;
 varying vec3 v_kd;
 varying vec3 v_ks;
 varying vec2 v_shininess_textured;
+)";
+const char* const kPhongVertex = R"(
 void main() {
     v_position = a_position;
     v_normal = a_normal;
@@ -133,14 +136,6 @@ void main() {
 }
 )";
 const char* const kPhongFragment = R"(
-varying vec3 v_position;
-varying vec3 v_normal;
-varying vec3 v_color;
-varying vec2 v_texcoord;
-varying vec3 v_ka;
-varying vec3 v_kd;
-varying vec3 v_ks;
-varying vec2 v_shininess_textured;
 void main() {
     vec3 color = v_color * texel(v_texcoord, v_shininess_textured.y);
     vec3 carried;
@@ -178,11 +173,12 @@ GLuint link_program(bool phong, std::size_t light_count) {
                                "\n#define LIGHT_ARRAY " + std::to_string(std::max<std::size_t>(1, light_count)) +
                                "\n";
     const GLuint vertex = compile(GL_VERTEX_SHADER, header + kAttributesGlsl +
-                                                        (phong ? std::string(kPhongVertex)
+                                                        (phong ? std::string(kPhongVaryings) + kPhongVertex
                                                                : std::string(kLightingGlsl) + kGouraudVertex));
-    const GLuint fragment =
-        compile(GL_FRAGMENT_SHADER, header + kTexelGlsl +
-                                        (phong ? std::string(kLightingGlsl) + kPhongFragment : kGouraudFragment));
+    const GLuint fragment = compile(GL_FRAGMENT_SHADER, header + kTexelGlsl +
+                                                            (phong ? std::string(kLightingGlsl) + kPhongVaryings +
+                                                                         kPhongFragment
+                                                                   : std::string(kGouraudFragment)));
     const GLuint program = glCreateProgram();
     glAttachShader(program, vertex);
     glAttachShader(program, fragment);
