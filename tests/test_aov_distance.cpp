@@ -200,6 +200,23 @@ TEST_CASE("a distance past float's largest is float's largest, never the backgro
     CHECK(clamped < 64);  // the centre's rays are short enough
 }
 
+TEST_CASE("a depth past float's largest is float's largest, never the background's infinity") {
+    // Double precision draws a plane 1e39 away (float's largest is 3.4e38):
+    // its depth and distance planes hold float's largest, its id is set.
+    Scene scene = plane_scene(Camera::look_at({0.0, 0.0, 1e39}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 1.0, 8.0, 8.0), 8, 8);
+    add_quad(scene.mesh, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 6e39);
+    RenderOptions options = with_planes(1, SamplePattern::ordered_grid);
+    options.precision = Precision::double_float;
+    const AovPlanes& planes = render(scene, options).aovs;
+    REQUIRE(planes.depth.size() == 64);
+    for (std::size_t p = 0; p < 64; ++p) {
+        INFO("pixel " << p);
+        REQUIRE(planes.id[p] >= 0);
+        CHECK(planes.depth[p] == std::numeric_limits<float>::max());
+        CHECK(planes.distance[p] == std::numeric_limits<float>::max());
+    }
+}
+
 TEST_CASE("orthographic distance is the depth, from the plane through the eye") {
     Scene scene = plane_scene(Camera::orthographic({0.0, 0.0, 5.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 2.0, 2.0), 24, 24);
     // A tilted plane: depth varies over the image, and distance must follow it exactly.
