@@ -158,7 +158,11 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < medians.size(); ++i) {
         const bool is_textured = i == 1 || i == 2 || i == 4;
         std::string versus_llvmpipe = "";
-        if (with_llvmpipe && i < 3) versus_llvmpipe = std::to_string(medians[i] / medians[is_textured ? 4 : 3]).substr(0, 4);
+        if (with_llvmpipe && i < 3) {
+            char ratio[32];  // rounded like the other columns (not cut off)
+            std::snprintf(ratio, sizeof ratio, "%.2f", medians[i] / medians[is_textured ? 4 : 3]);
+            versus_llvmpipe = ratio;
+        }
         std::printf("| %s | %.1f | %.2f | %s |\n", names[i].c_str(), medians[i], medians[i] / medians[0],
                     versus_llvmpipe.c_str());
     }
