@@ -14,8 +14,9 @@ namespace phongrast::detail {
 namespace {
 
 constexpr float kBackgroundDepth = std::numeric_limits<float>::infinity();
-constexpr double kLargestDistance = std::numeric_limits<float>::max();
-constexpr double kLargestDepth = std::numeric_limits<float>::max();
+/// What a surface's depth and distance are capped at: in double precision a surface can lie
+/// beyond float's range, and +infinity is the background's value.
+constexpr double kLargestPlaneValue = std::numeric_limits<float>::max();
 
 template <typename Real>
 glm::vec3 world_from_camera(const CameraFrame& frame, const Vec3<Real>& camera_normal) {
@@ -66,18 +67,15 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
                                                         static_cast<Real>(k)) * inverse_area * inverse_depth[i];
                     surface_depth = Real(1) / sum;
                 }
-                // At most float's largest too: in double precision a surface beyond it
-                // (depths are drawn up to 1e300) must not read as the background's +infinity.
-                out.depth[index] = static_cast<float>(std::min(static_cast<double>(surface_depth), kLargestDepth));
+                out.depth[index] =
+                    static_cast<float>(std::min(static_cast<double>(surface_depth), kLargestPlaneValue));
                 if (planes.distance) {
                     // z_c along the ray through this sample's centre (AovPassInput::sample_offset).
                     const glm::dvec3 ray = frame.camera_ray(first_column + k + 0.5 + in.sample_offset.x,
                                                             row + 0.5 + in.sample_offset.y);
-                    // At most float's largest: a depth near it (double precision) times a wide ray must not
-                    // become +infinity, the background's value.
                     out.distance[index] = static_cast<float>(std::min(static_cast<double>(surface_depth) *
                                                                           glm::length(ray),
-                                                                      kLargestDistance));
+                                                                      kLargestPlaneValue));
                 }
             }
             if (planes.id) {

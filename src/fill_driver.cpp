@@ -145,10 +145,8 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
     image.rows = rows;
     image.columns = columns;
     // Cleared band by band, in parallel, below: resizing writes only what a larger image adds.
-    resize_polling(image.pixels, static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns), [&progress] {
-        progress.poll();
-        progress.throw_if_cancelled();  // a cancel stops the growth too
-    });
+    resize_polling(image.pixels, static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns),
+                   progress.poll_function());
     prepare_memory(plan, bins.bands, image.pixels.size(), memory);
     tbb::parallel_for(0, bins.bands, [&](int band) {
         if (progress.cancelled()) return;

@@ -26,9 +26,7 @@ void gather(const std::vector<T>& in, const std::vector<std::uint32_t>& source, 
         out.clear();
         return;
     }
-    resize_polling(out, source.size(), [&poll] {
-        if (poll) poll();
-    });
+    resize_polling(out, source.size(), poll);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, source.size(), kGatherBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) out[i] = in[source[i]];

@@ -33,20 +33,17 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
     constexpr std::size_t kBlock = 16384;
     const std::size_t vertex_count = positions.size(), triangle_count = triangles.size();
     // New scratch memory is filled with polls in between (resize_polling.hpp).
-    const auto report = [&poll] {
-        if (poll) poll();
-    };
     std::vector<glm::dvec3>& sums = scratch.sums;
-    assign_polling(sums, vertex_count, glm::dvec3(0.0), report);
+    assign_polling(sums, vertex_count, glm::dvec3(0.0), poll);
     // For the fallback: each vertex's largest adjacent face (twice its area) and unit normal.
     std::vector<double>& largest_area = scratch.largest_area;
-    assign_polling(largest_area, vertex_count, 0.0, report);
+    assign_polling(largest_area, vertex_count, 0.0, poll);
     std::vector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
-    assign_polling(largest_face_normal, vertex_count, glm::dvec3(0.0), report);
-    report();
+    assign_polling(largest_face_normal, vertex_count, glm::dvec3(0.0), poll);
+    if (poll) poll();
 
     std::vector<glm::dvec4>& faces = scratch.faces;  // cross product, twice the area (-1: not finite, skipped)
-    resize_polling(faces, triangle_count, report);
+    resize_polling(faces, triangle_count, poll);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangle_count, kBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t t = range.begin(); t != range.end(); ++t) {

@@ -4,18 +4,20 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace phongrast::detail {
 
 /// values.resize(size), but growing in steps of about 4 MiB with `poll()`
-/// between them. A resize value-initialises its new part on one thread: in
+/// between them (ProgressMonitor::poll_function(), which reports and throws
+/// RenderCancelled once cancelled; empty: no polls). A resize value-initialises its new part on one thread: in
 /// a fresh Renderer, a 2048² supersampled image is 50 MB of new zeroed
 /// pages, which took 0.3-0.5 s under load with no progress report in
 /// between (so Ctrl-C in Python waited that long). The contents end up the
 /// same as one resize's; shrinking is one resize.
-template <typename T, typename Poll>
-void resize_polling(std::vector<T>& values, std::size_t size, const Poll& poll) {
+template <typename T>
+void resize_polling(std::vector<T>& values, std::size_t size, const std::function<void()>& poll) {
     if (size <= values.size()) {
         values.resize(size);
         return;
@@ -25,15 +27,15 @@ void resize_polling(std::vector<T>& values, std::size_t size, const Poll& poll) 
     const std::size_t step = std::max<std::size_t>(1, kStepBytes / sizeof(T));
     while (values.size() < size) {
         values.resize(std::min(size, values.size() + step));
-        poll();
+        if (poll) poll();
     }
 }
 
 /// values.assign(size, value), the same way: when the vector must grow
 /// beyond its capacity (new pages), it is filled in steps with `poll()`
 /// between them; otherwise one assign (memory already touched is fast).
-template <typename T, typename Poll>
-void assign_polling(std::vector<T>& values, std::size_t size, const T& value, const Poll& poll) {
+template <typename T>
+void assign_polling(std::vector<T>& values, std::size_t size, const T& value, const std::function<void()>& poll) {
     if (size <= values.capacity()) {
         values.assign(size, value);
         return;
@@ -44,7 +46,7 @@ void assign_polling(std::vector<T>& values, std::size_t size, const T& value, co
     const std::size_t step = std::max<std::size_t>(1, kStepBytes / sizeof(T));
     while (values.size() < size) {
         values.resize(std::min(size, values.size() + step), value);
-        poll();
+        if (poll) poll();
     }
 }
 

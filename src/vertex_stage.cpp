@@ -74,12 +74,8 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
         if (fill_in) keep_given_normals(mesh.normals, memory.normals);
     }
     const std::vector<glm::vec3>& normals = mesh.normals.empty() || fill_in ? memory.normals : mesh.normals;
-    const auto poll = [&progress] {
-        progress.poll();
-        progress.throw_if_cancelled();
-    };
-    resize_polling(out.screen, count, poll);
-    resize_polling(out.varyings, count, poll);
+    resize_polling(out.screen, count, progress.poll_function());
+    resize_polling(out.varyings, count, progress.poll_function());
     const CameraFrame& frame = view.frame;
     progress.begin_stage(0.05, 0.1, (count + kTransformBlock - 1) / kTransformBlock);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kTransformBlock),
