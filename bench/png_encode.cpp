@@ -24,7 +24,7 @@
 #include "png_encoder.hpp"
 
 using namespace phongrast;
-namespace detail = phongrast::io::detail;
+namespace iod = phongrast::io::detail;
 
 namespace {
 
@@ -50,7 +50,7 @@ long file_size(const std::string& path) {
 }
 
 /// OpenImageIO's PNG writer with its defaults, as phongrast's write_image called it before.
-void write_with_openimageio(const std::string& path, const detail::PngPixels& pixels) {
+void write_with_openimageio(const std::string& path, const iod::PngPixels& pixels) {
     auto output = OIIO::ImageOutput::create(path);
     const OIIO::TypeDesc type = pixels.bit_depth == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8;
     OIIO::ImageSpec spec(pixels.columns, pixels.rows, pixels.channels, type);
@@ -72,7 +72,7 @@ struct Case {
 
 struct Variant {
     std::string name;
-    detail::PngPixels pixels;
+    iod::PngPixels pixels;
 };
 
 }  // namespace
@@ -101,8 +101,8 @@ int main(int argc, char** argv) {
         for (std::size_t p = 0; p < count; ++p) {
             bool background = true;
             for (int c = 0; c < 3; ++c) {
-                rgb[3 * p + c] = rgba[4 * p + c] = detail::to_8_bit(image.pixels[p][c]);
-                rgb16[3 * p + c] = detail::to_16_bit(image.pixels[p][c]);
+                rgb[3 * p + c] = rgba[4 * p + c] = iod::to_8_bit(image.pixels[p][c]);
+                rgb16[3 * p + c] = iod::to_16_bit(image.pixels[p][c]);
                 background = background && rgb[3 * p + c] == 255;
             }
             rgba[4 * p + 3] = background ? 0 : 255;  // a transparent background, as --transparent writes
@@ -115,20 +115,20 @@ int main(int argc, char** argv) {
         for (const Variant& variant : variants) {
             std::vector<Case> cases;
             cases.push_back({"OpenImageIO (before)", [&](const std::string& path) { write_with_openimageio(path, variant.pixels); }, {}, 0});
-            const auto add = [&](const std::string& name, detail::PngSettings settings) {
-                cases.push_back({name, [=](const std::string& path) { detail::write_png(path, path, variant.pixels, settings); }, {}, 0});
+            const auto add = [&](const std::string& name, iod::PngSettings settings) {
+                cases.push_back({name, [=](const std::string& path) { iod::write_png(path, path, variant.pixels, settings); }, {}, 0});
             };
             if (survey) {
                 const char* filter_names[] = {"none", "sub", "up", "average", "paeth"};
                 for (int filter = 0; filter < 5; ++filter) {
                     for (int level : {1, 2, 3, 4, 5, 6, 9, 12}) {
                         add("libdeflate " + std::to_string(level) + ", " + filter_names[filter],
-                            {level, static_cast<detail::PngFilter>(filter)});
+                            {level, static_cast<iod::PngFilter>(filter)});
                     }
                 }
             } else {
                 for (io::PngCompression choice : {io::PngCompression::fast, io::PngCompression::standard, io::PngCompression::small}) {
-                    add(std::string("phongrast --png-compression ") + io::to_string(choice), detail::png_settings(choice));
+                    add(std::string("phongrast --png-compression ") + io::to_string(choice), iod::png_settings(choice));
                 }
             }
             for (int round = 0; round < rounds + 1; ++round) {
