@@ -106,21 +106,7 @@ std::vector<ViewDirection> job_directions(const BatchJob& job) {
     return turntable_directions(job.views / static_cast<int>(job.elevations.size()), job.elevations);
 }
 
-std::shared_ptr<const io::MeshFile> LastMesh::read(const std::string& path) {
-    std::error_code error;
-    const auto bytes = std::filesystem::file_size(path, error);
-    const auto modified = std::filesystem::last_write_time(path, error);
-    const std::string key = error ? "" : path + "|" + std::to_string(bytes) + "|" +
-                                             std::to_string(modified.time_since_epoch().count());
-    if (key.empty() || key != key_ || !mesh_) {
-        mesh_.reset();
-        mesh_ = std::make_shared<const io::MeshFile>(io::read_mesh(path));  // throws for a bad file: nothing is kept
-        key_ = key;
-    }
-    return mesh_;
-}
-
-JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes) {
+JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes) {
     SceneFlags flags;
     flags.input = job.kind == JobKind::inline_scene ? "" : job.path;
     flags.shader = job.settings.shader;

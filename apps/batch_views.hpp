@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "batch_manifest.hpp"
+#include "batch_mesh_cache.hpp"
 #include "phongrast/io/mesh_file.hpp"
 #include "scene_setup.hpp"
 
@@ -24,21 +25,10 @@ struct JobScenes {
     std::vector<std::vector<PointLight>> lights;    ///< one set per view
 };
 
-/// Keeps the last OBJ file read (known by its path, size and modification
-/// time), so that consecutive jobs of a shard sharing a mesh parse it once.
-class LastMesh {
-public:
-    std::shared_ptr<const io::MeshFile> read(const std::string& path);
-
-private:
-    std::string key_;
-    std::shared_ptr<const io::MeshFile> mesh_;
-};
-
 /// Loads a job's files, meshes through `meshes` when given. Throws
 /// io::FileError or std::invalid_argument for a bad scene or mesh (the job
 /// fails, the batch goes on).
-JobScenes load_job(const BatchJob& job, int threads, LastMesh* meshes = nullptr);
+JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes = nullptr);
 
 /// Where one view looks from, relative to the automatic framing's view:
 /// turned `azimuth` radians about the vertical (+y) axis through the look-at

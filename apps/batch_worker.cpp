@@ -67,7 +67,7 @@ struct WriteItem {
 
 void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, int threads,
                 BoundedQueue<LoadedJob>& loaded) {
-    LastMesh meshes;
+    MeshFileCache meshes;  // every mesh parsed once per shard, while memory allows
     for (std::size_t position = first; position < jobs.size(); ++position) {
         LoadedJob job;
         try {

@@ -40,7 +40,7 @@ struct SceneFlags {
     double crease = 180.0;         ///< degrees; sharper edges keep separate normals
     bool quiet = false;
     /// Reads a mesh file; empty: io::read_mesh. The batch command passes a
-    /// reader that keeps the last mesh, for jobs that share it.
+    /// reader that keeps parsed meshes (MeshFileCache), for jobs that share them.
     std::function<std::shared_ptr<const io::MeshFile>(const std::string& path)> read_mesh;
 };
 

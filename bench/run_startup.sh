@@ -23,6 +23,8 @@
 #    mesh (40 turntable views: (wall of 40 - wall of 1) / 39 - the log's
 #    render time per image).
 # Output: Markdown tables on stdout. WORK: scratch folder (default a temporary one).
+# SECTIONS: which of "startup png batch" to run (default all three), e.g.
+# SECTIONS=batch for the batch part alone (it then also reports CPU time).
 set -eu
 cd "$(dirname "$0")/.."
 baseline=$(realpath "$1")
@@ -55,6 +57,8 @@ hyper() {
   python3 -c "import json; print(' '.join('%.2f' % (1e3 * r['min']) for r in json.load(open('$work/h.json'))['results']))" > "$work/min.txt"
 }
 
+sections=" ${SECTIONS:-startup png batch} "
+if [[ $sections == *" startup "* ]]; then
 echo "start-up ..." >&2
 cd "$work"
 hyper "$baseline --version" "$phongrast --version" \
@@ -86,13 +90,17 @@ awk -v a="${q[0]}" -v b="${q[1]}" -v c="${p[0]}" -v d="${p[1]}" -v ac="${qc[0]}"
   printf "| `import phongrast` on top of `import numpy` (difference of the two) | %s | %.2f / %.2f / %.2f ms | <= 20 ms |\n",
          (b > 0 ? sprintf("%.2f / %.2f / %.2f ms", b - a, bm - am, bc - ac) : "not measured"), d - c, dm - cm, dc - cc }'
 echo
+fi
 
+if [[ $sections == *" png "* ]]; then
 echo "PNG encoding ..." >&2
 "$phongrast" render assets/default.json --size 512x512 -q -o "$work/default512.png"
 "$phongrast" render "$work/knot10k.obj" --size 1024x768 -q -o "$work/knot1024x768.png"
 "$bench_png" --rounds "${PNG_ROUNDS:-15}" "$work/default512.png" "$work/knot1024x768.png"
 echo
+fi
 
+[[ $sections == *" batch "* ]] || { [ -n "${WORK:-}" ] || rm -rf "$work"; exit 0; }
 echo "batch ..." >&2
 : > "$work/thumbs.jsonl"
 for j in $(seq 0 999); do
@@ -103,12 +111,24 @@ echo "{\"mesh\": \"knot100k.obj\", \"size\": \"512x512\"}" > "$work/big1.jsonl"
 render_seconds() { cat "$1"/.phongrast-batch/*.jsonl | grep -o '"render_seconds":[0-9.e+-]*' | cut -d: -f2 |
                    awk '{ s += $1 } END { printf "%.6f", s }'; }
 timed() { local s e; s=$(now); "$@" > /dev/null 2>&1 || true; e=$(now); awk -v a="$s" -v b="$e" 'BEGIN { printf "%.6f", b - a }'; }
-base_rates=(); new_rates=(); outside=(); renders=()
+# Wall seconds on stdout like timed; the CPU seconds (user + sys of the process
+# and its workers, bash's `time`) appended to $work/cpu-seconds.
+timed_cpu() {
+  local TIMEFORMAT='%R %U %S' line
+  line=$( { time "$@" > /dev/null 2>&1 || true; } 2>&1 )
+  set -- $line
+  awk -v u="$2" -v s="$3" 'BEGIN { printf "%.6f\n", u + s }' >> "$work/cpu-seconds"
+  printf '%s' "$1"
+}
+base_rates=(); new_rates=(); outside=(); renders=(); base_cpu=(); new_cpu=()
 for run in $(seq "$repeats"); do
   echo "run $run of $repeats ..." >&2
   rm -rf "$work/out-b" "$work/out-n"
-  w=$(timed "$baseline" batch "$work/thumbs.jsonl" -o "$work/out-b" --quiet); base_rates+=("$(awk -v w="$w" 'BEGIN { print 1000 / w }')")
-  w=$(timed "$phongrast" batch "$work/thumbs.jsonl" -o "$work/out-n" --quiet); new_rates+=("$(awk -v w="$w" 'BEGIN { print 1000 / w }')")
+  : > "$work/cpu-seconds"
+  w=$(timed_cpu "$baseline" batch "$work/thumbs.jsonl" -o "$work/out-b" --quiet); base_rates+=("$(awk -v w="$w" 'BEGIN { print 1000 / w }')")
+  w=$(timed_cpu "$phongrast" batch "$work/thumbs.jsonl" -o "$work/out-n" --quiet); new_rates+=("$(awk -v w="$w" 'BEGIN { print 1000 / w }')")
+  mapfile -t c < "$work/cpu-seconds"
+  base_cpu+=("${c[0]}"); new_cpu+=("${c[1]}")
   rm -rf "$work/out-1" "$work/out-40"
   w1=$(timed "$phongrast" batch "$work/big1.jsonl" -o "$work/out-1" --quiet)
   w40=$(timed "$phongrast" batch "$work/big40.jsonl" -o "$work/out-40" --quiet)
@@ -120,9 +140,12 @@ done
 [ "$(ls "$work/out-n" | grep -c png)" = 1000 ] || { echo "batch wrote $(ls "$work/out-n" | grep -c png) images, expected 1000" >&2; exit 1; }
 b=$(printf '%s\n' "${base_rates[@]}" | median); n=$(printf '%s\n' "${new_rates[@]}" | median)
 o=$(printf '%s\n' "${outside[@]}" | median); r=$(printf '%s\n' "${renders[@]}" | median)
-awk -v b="$b" -v n="$n" -v o="$o" -v r="$r" -v k="$repeats" 'BEGIN {
-  printf "| `batch` (medians of %d runs, alternating) | before | after | goal |\n|---|---|---|---|\n", k
+bc=$(printf '%s\n' "${base_cpu[@]}" | median); nc=$(printf '%s\n' "${new_cpu[@]}" | median)
+awk -v b="$b" -v n="$n" -v o="$o" -v r="$r" -v k="$repeats" -v bc="$bc" -v nc="$nc" -v load="$(cut -d' ' -f1-3 /proc/loadavg)" 'BEGIN {
+  printf "| `batch` (medians of %d runs, alternating; %d cores, load %s at the end) | before | after | goal |\n|---|---|---|---|\n", k, '"$(nproc)"', load
   printf "| 1,000 jobs of 256x256 thumbnails: images per second | %.1f | %.1f (%.2fx) | >= 3x |\n", b, n, n / b
+  # (CPU seconds for 1,000 images = milliseconds per image)
+  printf "| the same: CPU time (user + sys, all processes) per image | %.2f ms | %.2f ms (%.2fx less) | |\n", bc, nc, bc / nc
   printf "| 100k triangles at 512x512, 40 views: render per image (log) | | %.2f ms | |\n", 1000 * r
   printf "| the same: time per image outside the render | | %.2f ms = %.0f%% of the render | <= 10%% |\n", 1000 * o, 100 * o / r
 }'

@@ -233,6 +233,8 @@ TEST_CASE("glTF images from a file beside it (URI-encoded) and from a data: URI,
     REQUIRE(file.warnings.size() == 1);
     CHECK_THAT(file.warnings[0], Contains("images.gltf: material lost: texture /textures/2 cannot be read") &&
                                      Contains("missing.png: no such file") && Contains("T = 1"));
+    // The image files beside it (data: URIs are inside the file): what a cache of this mesh watches.
+    CHECK(file.side_files == std::vector<std::string>{folder.file("tex file.png"), folder.file("missing.png")});
 }
 
 TEST_CASE("bad glTF texture input: the error names the file and the field") {

@@ -163,4 +163,6 @@ TEST_CASE("glTF: node transforms, base colour factors, external buffers, texture
     REQUIRE(file.warnings.size() == 2);
     CHECK_THAT(file.warnings[0], Contains("missing.png: no such file"));
     CHECK_THAT(file.warnings[1], Contains("2 triangles with a textured material") && Contains("no texture coordinates"));
+    // The files beside it that a cache must watch: the buffer, then the (missing) image.
+    CHECK(file.side_files == std::vector<std::string>{folder.file("tri.bin"), folder.file("missing.png")});
 }

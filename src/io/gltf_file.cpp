@@ -104,6 +104,7 @@ public:
         if (any_texcoords_) mesh.texcoord_triangles.resize(triangles, Triangle{kNoIndex, kNoIndex, kNoIndex});
         if (!mesh.materials.empty()) mesh.face_materials.resize(triangles, kNoIndex);
         warn_textured_faces_without_texcoords(file_, path_);
+        file_.side_files.insert(file_.side_files.end(), materials_.image_files.begin(), materials_.image_files.end());
         return std::move(file_);
     }
 
@@ -296,9 +297,11 @@ void GltfScene::add_primitive(const json& primitive, const glm::dmat4& world, co
     }
 }
 
-/// The file's buffers: the GLB's BIN chunk, base64 data: URIs, or files next to `path`.
+/// The file's buffers: the GLB's BIN chunk, base64 data: URIs, or files next
+/// to `path` (their names appended to `file_names`).
 std::vector<std::string_view> load_buffers(const json& document, std::string_view bin, const std::string& path,
-                                           std::vector<std::string>& decoded, std::vector<FileBytes>& files) {
+                                           std::vector<std::string>& decoded, std::vector<FileBytes>& files,
+                                           std::vector<std::string>& file_names) {
     const json& buffers = gltf_array(document, "buffers");
     std::vector<std::string_view> views;
     decoded.reserve(buffers.size());
@@ -314,7 +317,8 @@ std::vector<std::string_view> load_buffers(const json& document, std::string_vie
             data = decoded.back();
         } else if (!uri.empty()) {
             const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-            files.push_back(FileBytes::read((folder / uri).string(), "buffer"));
+            file_names.push_back((folder / uri).string());
+            files.push_back(FileBytes::read(file_names.back(), "buffer"));
             data = files.back().view();
         }
         const auto length = static_cast<std::uint64_t>(gltf_integer(buffers[i], "byteLength", where, path, 0));
@@ -350,8 +354,10 @@ static MeshFile parse_gltf_document(std::string_view bytes, const std::string& p
     }
     std::vector<std::string> decoded;
     std::vector<FileBytes> files;
-    const GltfAccessors accessors(document, load_buffers(document, bin, path, decoded, files), path);
+    std::vector<std::string> buffer_files;
+    const GltfAccessors accessors(document, load_buffers(document, bin, path, decoded, files, buffer_files), path);
     MeshFile file = GltfScene(document, accessors, path).read();
+    file.side_files.insert(file.side_files.begin(), buffer_files.begin(), buffer_files.end());
     if (file.mesh.positions.size() > std::numeric_limits<std::uint32_t>::max()) throw FileError(path + ": too many vertices");
     check_mesh(file.mesh, path);
     return file;

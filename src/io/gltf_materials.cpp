@@ -178,7 +178,8 @@ std::shared_ptr<const TextureImage> GltfMaterials::image(std::int64_t index, con
         return load_texture_from_memory(bytes, path_ + where + extension_for(mime.empty() ? data_mime : mime), key, &why);
     }
     const std::filesystem::path folder = std::filesystem::path(path_).parent_path();
-    return load_texture((folder / decode_percent(uri)).string(), &why);
+    image_files.push_back((folder / decode_percent(uri)).string());
+    return load_texture(image_files.back(), &why);
 }
 
 }  // namespace phongrast::io

@@ -33,6 +33,9 @@ public:
     /// once per material index and appended to `materials`.
     Use use(const nlohmann::json& primitive, const std::string& where, std::vector<FaceMaterial>& materials);
 
+    /// The image files read so far (MeshFile::side_files).
+    std::vector<std::string> image_files;
+
 private:
     FaceMaterial read(std::int64_t index, std::int64_t& texcoord_set);
     std::optional<TextureMap> texture(const nlohmann::json& info, const std::string& where, const std::string& material,

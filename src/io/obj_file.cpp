@@ -226,6 +226,7 @@ MeshFile parse_obj(std::string_view text, const std::string& path) {
     result.material = materials.first;
     result.material_name = std::move(materials.first_name);
     result.warnings = std::move(materials.warnings);
+    result.side_files = std::move(materials.side_files);
     warn_textured_faces_without_texcoords(result, path);
     check_mesh(result.mesh, path);
     return result;

@@ -178,6 +178,7 @@ public:
         for (const std::string& name : whole ? std::vector<std::string>{argument} : split_words(argument)) {
             if (!loaded_.insert(name).second) continue;
             const std::string file = (folder_ / name).string();
+            side_files_.push_back(file);  // even when missing: a file that appears later changes the mesh
             std::ifstream in(file, std::ios::binary);
             if (!in) {
                 warn(line, "MTL file " + file + " not found; faces using its materials have no material of their own");
@@ -204,6 +205,7 @@ public:
     }
 
     std::vector<std::string>& warnings() { return warnings_; }
+    std::vector<std::string>& side_files() { return side_files_; }
 
 private:
     void warn(std::size_t line, const std::string& what) {
@@ -216,6 +218,7 @@ private:
         TextureMap map;
         map.wrap_s = map.wrap_t = entry.wrap;
         std::string why;
+        side_files_.push_back(entry.texture_path);
         map.image = load_texture(entry.texture_path, &why);
         if (!map.image) {
             warnings_.push_back(path_ + ": material " + material.name + ": texture " + entry.texture_path +
@@ -231,6 +234,7 @@ private:
     std::map<std::string, std::uint32_t> used_;
     std::set<std::string> loaded_;
     std::vector<std::string> warnings_;
+    std::vector<std::string> side_files_;
 };
 
 /// Version 1's reading of an MTL entry: absent Ka, Kd, Ks as 0, Ns as 1.
@@ -274,6 +278,7 @@ ObjMaterials read_obj_materials(const std::vector<ObjMaterialUse>& uses, std::si
         break;
     }
     result.warnings = std::move(library.warnings());
+    result.side_files = std::move(library.side_files());
     return result;
 }
 

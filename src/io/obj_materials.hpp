@@ -33,6 +33,7 @@ struct ObjMaterials {
     std::optional<PhongMaterial> first;
     std::string first_name;
     std::vector<std::string> warnings;  ///< "path:line: ..." lines
+    std::vector<std::string> side_files;  ///< MTL files looked for and texture files named (MeshFile::side_files)
 };
 
 /// Follows the statements in order; MTL files are looked up next to `path`,

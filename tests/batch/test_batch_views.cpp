@@ -13,6 +13,8 @@
 #include "phongrast/io/error.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/io/auto_scene.hpp"
+#include "phongrast/io/image_file.hpp"
+#include "phongrast/io/mesh_file.hpp"
 
 using namespace phongrast;
 using namespace phongrast::cli;
@@ -169,16 +171,91 @@ TEST_CASE("elevation rings: one turntable per elevation, ring after ring") {
     CHECK(first.x * second.x + first.z * second.z == Approx(0.0).margin(1e-9));
 }
 
-TEST_CASE("the last mesh is kept for the next job, and read again when the file changes") {
+TEST_CASE("parsed meshes are kept across jobs in any order, and read again when the file changes") {
     TemporaryFolder folder;
-    const std::string path = folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    LastMesh meshes;
-    const auto first = meshes.read(path);
-    CHECK(first->mesh.positions.size() == 3);
-    CHECK(meshes.read(path).get() == first.get());  // kept: the same file, not read again
-    folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
-    CHECK(meshes.read(path)->mesh.positions.size() == 4);
-    folder.write("m.obj", "v 0 0 0\nf 1 2 3\n");
-    CHECK_THROWS_AS(meshes.read(path), phongrast::io::FileError);
+    const std::string a = folder.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string b = folder.write("b.obj", "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 2 2 0\nf 1 2 3\nf 2 4 3\n");
+    MeshFileCache meshes;
+    const auto first_a = meshes.read(a);
+    const auto first_b = meshes.read(b);
+    CHECK(first_a->mesh.positions.size() == 3);
+    CHECK(first_b->mesh.positions.size() == 4);
+    // A, B, A, B: never the same mesh twice in a row, still each parsed once.
+    CHECK(meshes.read(a).get() == first_a.get());
+    CHECK(meshes.read(b).get() == first_b.get());
+    CHECK(meshes.read(folder.file("./a.obj")).get() == first_a.get());  // the same file by another name
+    CHECK(meshes.parses() == 2);
+    CHECK(meshes.files() == 2);
+    CHECK(meshes.bytes() == mesh_file_bytes(*first_a) + mesh_file_bytes(*first_b));
+
+    folder.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+    CHECK(meshes.read(a)->mesh.positions.size() == 4);
+    CHECK(meshes.parses() == 3);
+    CHECK(meshes.files() == 2);  // the old a.obj is gone, not kept beside the new one
+    folder.write("a.obj", "v 0 0 0\nf 1 2 3\n");
+    CHECK_THROWS_AS(meshes.read(a), phongrast::io::FileError);
+    CHECK(meshes.files() == 1);  // the stale a.obj was dropped, the failure not kept
     CHECK_THROWS_AS(meshes.read(folder.file("missing.obj")), phongrast::io::FileError);
+    CHECK(meshes.read(b).get() == first_b.get());
+}
+
+TEST_CASE("a cached OBJ is read again when its MTL file or texture changes, or a missing MTL appears") {
+    TemporaryFolder folder;
+    const std::string obj = folder.write("m.obj",
+                                         "mtllib m.mtl\nmtllib later.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                         "vt 0 0\nvt 1 0\nvt 0 1\nusemtl red\nf 1/1 2/2 3/3\n");
+    folder.write("m.mtl", "newmtl red\nKd 1 0 0\nmap_Kd t.png\n");
+    io::write_image(Image(1, 2, glm::vec3(0.0f, 1.0f, 0.0f)), folder.file("t.png"));
+    MeshFileCache meshes;
+    const auto first = meshes.read(obj);
+    REQUIRE(first->mesh.materials.size() == 1);
+    CHECK(first->mesh.materials[0].coefficients.kd == glm::vec3(1, 0, 0));
+    REQUIRE(first->mesh.materials[0].texture->image);
+    CHECK(first->mesh.materials[0].texture->image->at(0, 1) == glm::vec3(0, 1, 0));
+    CHECK(meshes.read(obj).get() == first.get());
+
+    // Edits change the size: file times may not tick between two quick writes.
+    folder.write("m.mtl", "newmtl red\nKd 0 0 0.5\nmap_Kd t.png\n");
+    const auto edited_mtl = meshes.read(obj);
+    CHECK(edited_mtl->mesh.materials[0].coefficients.kd == glm::vec3(0, 0, 0.5f));
+    CHECK(meshes.read(obj).get() == edited_mtl.get());
+
+    io::write_image(Image(1, 3, glm::vec3(1.0f, 1.0f, 0.0f)), folder.file("t.png"));
+    const auto edited_texture = meshes.read(obj);
+    CHECK(edited_texture.get() != edited_mtl.get());
+    CHECK(edited_texture->mesh.materials[0].texture->image->at(0, 1) == glm::vec3(1, 1, 0));
+
+    folder.write("later.mtl", "newmtl blue\nKd 0 0 1\n");  // named by the OBJ, missing until now
+    CHECK(meshes.read(obj).get() != edited_texture.get());
+    CHECK(meshes.parses() == 4);
+    CHECK(meshes.files() == 1);
+}
+
+TEST_CASE("past the memory budget the least recently used meshes are dropped, the newest always kept") {
+    TemporaryFolder folder;
+    const std::string a = folder.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string b = folder.write("b.obj", "v 0 0 0\nv 2 0 0\nv 0 2 0\nf 1 2 3\n");
+    const std::string c = folder.write("c.obj", "v 0 0 0\nv 3 0 0\nv 0 3 0\nf 1 2 3\n");
+    const std::size_t one = mesh_file_bytes(io::read_mesh(a));
+    MeshFileCache two_fit(2 * one + one / 2);
+    two_fit.read(a);
+    two_fit.read(b);
+    two_fit.read(a);  // a is now more recent than b
+    two_fit.read(c);  // over the budget: b goes
+    CHECK(two_fit.files() == 2);
+    CHECK(two_fit.parses() == 3);
+    two_fit.read(a);
+    two_fit.read(c);
+    CHECK(two_fit.parses() == 3);
+    two_fit.read(b);
+    CHECK(two_fit.parses() == 4);
+    CHECK(two_fit.bytes() <= 2 * one + one / 2);
+
+    MeshFileCache none_fit(1);  // each mesh alone is over the budget: the last one stays, like a last-mesh cache
+    const auto kept = none_fit.read(a);
+    CHECK(none_fit.read(a).get() == kept.get());
+    none_fit.read(b);
+    CHECK(none_fit.files() == 1);
+    none_fit.read(a);
+    CHECK(none_fit.parses() == 3);
 }

@@ -30,6 +30,11 @@ struct MeshFile {
     /// Problems that do not stop the load (an MTL file or a texture that is
     /// missing, an unknown material, ...), one per line, each naming the file.
     std::vector<std::string> warnings;
+    /// The other files the reader read or looked for: an OBJ's MTL files and
+    /// texture images, a glTF's external buffers and images. A cache of
+    /// MeshFiles (the batch command's) checks them as well as the mesh file,
+    /// so that an edited MTL or texture is read again.
+    std::vector<std::string> side_files;
 };
 
 enum class MeshFormat { obj, ply, stl, gltf };

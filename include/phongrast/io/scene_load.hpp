@@ -44,7 +44,7 @@ struct SceneLoadOptions {
     int rows = 0;
     int columns = 0;
     /// Reads a mesh file; empty: read_mesh. A cache (the batch command keeps
-    /// the last mesh for the next job) passes its own.
+    /// parsed meshes for the jobs that name them again) passes its own.
     std::function<std::shared_ptr<const MeshFile>(const std::string& path)> read_mesh;
 };
 
