@@ -224,9 +224,9 @@ void write_png(const std::string& file, const std::string& path, const PngPixels
 }
 
 std::uint16_t to_16_bit(float value) {
-    if (!(value > 0.0f)) return 0;
-    if (value >= 1.0f) return 65535;
-    return static_cast<std::uint16_t>(std::lround(value * 65535.0f));
+    // As to_8_bit (png_bytes.hpp): std::lround's rounding, exact in double for a product below 65536.
+    const float clamped = value > 0.0f ? (value < 1.0f ? value : 1.0f) : 0.0f;
+    return static_cast<std::uint16_t>(static_cast<int>(static_cast<double>(clamped * 65535.0f) + 0.5));
 }
 
 }  // namespace phongrast::io::detail
