@@ -92,6 +92,13 @@ struct MeshOrder {
     std::vector<glm::vec3> normals;  ///< computed in the caller's order, before the permutation
     /// Permutations computed so far (tests: a Renderer computes one per mesh).
     std::size_t permutations_computed = 0;
+
+    /// The next frame computes its permutation anew (the memory is kept): for
+    /// render()'s warm state, whose callers' meshes may reuse a freed mesh's address.
+    void forget_mesh() {
+        positions_data = nullptr;
+        triangles_data = nullptr;
+    }
 };
 
 /// Whether `scene` may be rendered reordered with `options`: a mesh of at least

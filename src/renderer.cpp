@@ -1,5 +1,6 @@
 // The public entry points: Renderer (a render pass's memory and a thread
-// arena per thread count, kept from frame to frame), render() and
+// arena per thread count, kept from frame to frame), render() (the same
+// memory kept per thread from call to call, for small frames) and
 // render_object().
 #include <algorithm>
 #include <chrono>
@@ -155,12 +156,70 @@ void validate_render(const Scene& scene, const RenderOptions& options) {
     make_camera_frame(scene.camera, scene.image.rows, scene.image.columns);
 }
 
-RenderResult render(const Scene& scene, const RenderOptions& options) {
-    detail::RendererState state;
-    state.options = options;
-    state.render(scene, true);
-    return std::move(state.result);
+namespace {
+
+/// render()'s memory on this thread, kept for its next call: a fresh
+/// RendererState faults in its buffers page by page, which costs a small
+/// frame several times its drawing (docs/performance.md, "One-off calls").
+/// Only the memory is reused: what a Renderer remembers about the previous
+/// scene (the mesh order, the assembly) is forgotten before every call, so
+/// each call computes what a fresh state would, and draws the same picture.
+struct OneOffMemory {
+    std::unique_ptr<detail::RendererState> state;
+    bool busy = false;  ///< a call is under way (render() from a progress callback gets fresh memory)
+};
+
+thread_local OneOffMemory t_one_off;
+
+/// Frames up to this size keep their memory for the thread's next call (a
+/// few tens of MB at most: tests/test_renderer.cpp); larger ones release it
+/// as they return, as every render() did before (a Renderer keeps any size).
+constexpr std::size_t kKeptTrianglesMax = std::size_t{1} << 18;
+constexpr std::size_t kKeptSamplesMax = std::size_t{2048} * 2048;
+
+bool keeps_memory(const Scene& scene, const RenderOptions& options) {
+    const auto samples = static_cast<std::size_t>(std::max(scene.image.rows, 0)) *
+                         static_cast<std::size_t>(std::max(scene.image.columns, 0)) *
+                         static_cast<std::size_t>(std::max(options.samples_per_axis, 1)) *
+                         static_cast<std::size_t>(std::max(options.samples_per_axis, 1));
+    std::size_t triangles = scene.mesh.triangles.size();
+    for (const SceneObject& object : scene.objects) triangles += object.mesh ? object.mesh->triangles.size() : 0;
+    return triangles <= kKeptTrianglesMax && samples <= kKeptSamplesMax;
 }
+
+}  // namespace
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    OneOffMemory& warm = t_one_off;
+    if (warm.busy || !keeps_memory(scene, options)) {
+        detail::RendererState state;
+        state.options = options;
+        state.render(scene, true);
+        return std::move(state.result);
+    }
+    warm.busy = true;
+    struct Release {
+        OneOffMemory& warm;
+        ~Release() { warm.busy = false; }
+    } release{warm};
+    if (!warm.state) warm.state = std::make_unique<detail::RendererState>();
+    detail::RendererState& state = *warm.state;
+    state.options = options;
+    state.assembly.forget();
+    state.mesh_order.forget_mesh();
+    try {
+        state.render(scene, true);
+    } catch (...) {
+        warm.state.reset();  // a failed or cancelled frame: start the next call afresh
+        throw;
+    }
+    RenderResult result = std::move(state.result);
+    state.result = RenderResult{};
+    state.options = RenderOptions{};  // drops the caller's progress callback and what it holds
+    return result;
+}
+
+void release_render_memory() { t_one_off.state.reset(); }
 
 Image render_object(const std::vector<glm::dvec3>& positions, const std::vector<glm::vec3>& colors,
                     const std::vector<Triangle>& faces, const Camera& camera, const ImageSpec& image,

@@ -76,6 +76,10 @@ struct SceneAssembly {
     /// nothing it depends on changed); its non-mesh fields are `scene`'s.
     const AssembledScene& assemble(const Scene& scene);
 
+    /// The next assemble() assembles anew (its memory is kept): for render()'s
+    /// warm state, whose callers' meshes may reuse a freed mesh's address.
+    void forget() { valid_ = false; }
+
 private:
     struct ObjectKey {
         const Mesh* mesh = nullptr;

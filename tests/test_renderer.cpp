@@ -134,6 +134,7 @@ TEST_CASE("a Renderer paints what render() paints, frame after frame, whatever c
         INFO(frame.what);
         renderer.set_options(frame.options);
         const RenderResult& reused = renderer.render(frame.scene);
+        release_render_memory();  // render() from fresh memory
         const RenderResult fresh = render(frame.scene, frame.options);
         REQUIRE(fresh.stats.samples_shaded > 100);
         CHECK(test_render_modes::same_bits(reused.image, fresh.image));
@@ -161,6 +162,7 @@ TEST_CASE("after its first frame a Renderer allocates nothing for frames no larg
 
 TEST_CASE("render() allocates per frame, a Renderer only on its first (the counter works)") {
     const Scene scene = sphere(16, 64, 80, Shader::phong, true);
+    release_render_memory();
     const long one_shot = allocations_during([&] { render(scene); });
     CHECK(one_shot > 10);  // the vertex arrays, the sort, the draw list, the image ...
     Renderer renderer;
@@ -173,4 +175,114 @@ TEST_CASE("render() allocates per frame, a Renderer only on its first (the count
     allocations_during([&] { renderer.render(larger); });
     CHECK(allocations_during([&] { renderer.render(larger); }) == 0);
     CHECK(allocations_during([&] { renderer.render(scene); }) == 0);
+}
+
+namespace {
+
+/// render() with the memory the thread's earlier calls left, and render()
+/// from fresh memory (released first): the same bits and statistics.
+void check_warm_equals_fresh(const Scene& scene, const RenderOptions& options) {
+    const RenderResult warm = render(scene, options);
+    release_render_memory();
+    const RenderResult fresh = render(scene, options);
+    REQUIRE(fresh.stats.samples_shaded > 0);
+    CHECK(test_render_modes::same_bits(warm.image, fresh.image));
+    check_same_stats(warm.stats, fresh.stats);
+}
+
+/// Two objects (a sphere and a smaller one beside it): a version-2 scene, which render() assembles.
+Scene objects_scene(const std::shared_ptr<const Mesh>& first, const std::shared_ptr<const Mesh>& second) {
+    Scene scene = sphere(8, 60, 70, Shader::phong, false);
+    scene.mesh = Mesh{};
+    scene.objects.push_back(SceneObject{first, glm::dmat4(1.0), {}, {}, {}});
+    glm::dmat4 beside(0.5);
+    beside[3] = glm::dvec4(1.2, 0.0, 0.0, 1.0);
+    scene.objects.push_back(SceneObject{second, beside, {}, {}, {}});
+    return scene;
+}
+
+}  // namespace
+
+TEST_CASE("render() reuses its thread's memory: the same pictures as fresh memory, whatever came before") {
+    // Different meshes, sizes, shaders and options in sequence, each call
+    // finding the memory of the one before (a fresh call's, of another frame).
+    release_render_memory();
+    for (const Frame& frame : varied_frames()) {
+        INFO(frame.what);
+        check_warm_equals_fresh(frame.scene, frame.options);
+    }
+    // Back down to tiny, and an extra output, after the large ones.
+    RenderOptions with_depth = RenderOptions::exact();
+    with_depth.aovs.depth = true;
+    const Scene tiny = sphere(6, 7, 5, Shader::gouraud, false);
+    const RenderResult warm = render(tiny, with_depth);
+    release_render_memory();
+    const RenderResult fresh = render(tiny, with_depth);
+    CHECK(test_render_modes::same_bits(warm.image, fresh.image));
+    CHECK(warm.aovs.depth == fresh.aovs.depth);
+}
+
+TEST_CASE("render() forgets the scene between calls: a mesh changed in place at the same address draws anew") {
+    // A Renderer would take an objects scene whose meshes keep their address
+    // and sizes for the same as before; render() must not.
+    auto moving = std::make_shared<Mesh>(sphere(10, 8, 8, Shader::phong, false).mesh);
+    const auto still = std::make_shared<const Mesh>(sphere(6, 8, 8, Shader::phong, false).mesh);
+    const Scene scene = objects_scene(moving, still);
+    release_render_memory();
+    const RenderResult before = render(scene);
+    for (glm::dvec3& p : moving->positions) p = glm::dvec3(0.6 * p.x, 1.3 * p.y, p.z + 0.2);  // same sizes, same address
+    const RenderResult after = render(scene);
+    release_render_memory();
+    const RenderResult fresh = render(scene);
+    CHECK_FALSE(test_render_modes::same_bits(before.image, after.image));
+    CHECK(test_render_modes::same_bits(after.image, fresh.image));
+    check_same_stats(after.stats, fresh.stats);
+}
+
+TEST_CASE("render() from a progress callback gets its own memory; a failed call leaves none behind") {
+    const Scene outer = sphere(20, 60, 60, Shader::phong, false);
+    const Scene inner = sphere(9, 30, 40, Shader::gouraud, true);
+    release_render_memory();
+    const RenderResult inner_alone = render(inner);
+    release_render_memory();
+    const RenderResult outer_alone = render(outer);
+    RenderOptions nested = RenderOptions::exact();
+    std::vector<Image> inner_images;
+    nested.progress = [&](double) {
+        if (inner_images.size() < 2) inner_images.push_back(render(inner).image);
+        return true;
+    };
+    const RenderResult with_nested = render(outer, nested);
+    REQUIRE(inner_images.size() == 2);
+    for (const Image& image : inner_images) CHECK(test_render_modes::same_bits(image, inner_alone.image));
+    CHECK(test_render_modes::same_bits(with_nested.image, outer_alone.image));
+
+    RenderOptions cancelling = RenderOptions::exact();
+    cancelling.progress = [](double) { return false; };
+    CHECK_THROWS_AS(render(outer, cancelling), RenderCancelled);
+    Scene bad = inner;
+    bad.camera.focal = -1.0;
+    CHECK_THROWS_AS(render(bad), std::invalid_argument);
+    check_warm_equals_fresh(outer, RenderOptions::exact());
+}
+
+TEST_CASE("render() keeps memory for small frames only; a repeated small call allocates little") {
+    const Scene small = sphere(16, 64, 80, Shader::phong, false);
+    release_render_memory();
+    const long first = allocations_during([&] { render(small); });
+    const long again = allocations_during([&] { render(small); });
+    CHECK(first > 10);
+    // The returned image and statistics are new each time; the working memory is not.
+    CHECK(again <= 4);
+    // Past 262,144 triangles nothing is kept: every call allocates as the first did.
+    const Scene large = sphere(260, 40, 40, Shader::flat, false);  // 520 x 518 = 269,360 triangles
+    REQUIRE(large.mesh.triangles.size() > (std::size_t{1} << 18));
+    release_render_memory();
+    const long large_first = allocations_during([&] { render(large); });
+    const long large_again = allocations_during([&] { render(large); });
+    CHECK(large_again > 10);
+    CHECK(large_again >= large_first / 2);
+    // The large frames' memory went with them: the next small call starts afresh, then keeps again.
+    CHECK(allocations_during([&] { render(small); }) > 10);
+    CHECK(allocations_during([&] { render(small); }) <= 4);
 }

@@ -248,7 +248,18 @@ struct RenderResult {
 /// (or its samples) past the size limit (image.hpp); each message names the
 /// C++ member (docs/robustness.md lists every case). RenderCancelled when the
 /// progress callback asks to stop.
+///
+/// Each thread keeps the working memory of its last render() call for its
+/// next one when the frame is small (at most 262,144 triangles and
+/// 2048 x 2048 samples), so a series of one-off calls does not fault in
+/// fresh memory every time; only the memory: nothing about the scene is
+/// remembered, and the picture is the one a fresh call draws. Larger frames
+/// release their memory as they return (a Renderer keeps any size).
 RenderResult render(const Scene& scene, const RenderOptions& options = RenderOptions::exact());
+
+/// Frees the memory render() keeps for the calling thread (it is freed
+/// anyway when the thread ends).
+void release_render_memory();
 
 /// The checks render() makes before drawing, alone: throws what render()
 /// would throw for `scene` and `options`, so that a caller can name the file
