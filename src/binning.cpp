@@ -4,6 +4,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "populate_pages.hpp"
+
 namespace phongrast::detail {
 namespace {
 
@@ -68,6 +70,7 @@ void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, i
         if (poll) poll();
     });
     lay_out_bands(blocks, memory, bins);
+    reserve_populated(bins.draws, bins.band_start[bands]);
     bins.draws.resize(bins.band_start[bands]);
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
         std::uint32_t* cursor = &memory.block_band_cursor[block * bands];

@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "prefetch.hpp"
+#include "populate_pages.hpp"
 #include "resize_polling.hpp"
 #include "term_counts.hpp"
 #include "view.hpp"
@@ -53,7 +54,7 @@ std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const DrawTriangle<
                                  VisibleLayer& layer, ProgressMonitor& progress) {
     const std::size_t samples = static_cast<std::size_t>(target.row_end - target.row_begin) *
                                 static_cast<std::size_t>(target.image.columns);
-    layer.owner.assign(samples, kNoOwner);
+    assign_populated(layer.owner, samples, kNoOwner);
     std::uint64_t covered = 0;
     for (std::uint32_t i = 0; i < count; ++i) {
         if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return covered;
@@ -89,7 +90,7 @@ std::uint64_t fill_every_layer(const FillPlan<Real>& plan, const DrawTriangle<Re
 
 template <typename Real>
 void prepare_memory(const FillPlan<Real>& plan, int bands, std::size_t samples, FillMemory<Real>& memory) {
-    memory.depth_buffer.assign(plan.depth_test ? samples : 0, std::numeric_limits<Real>::infinity());
+    assign_populated(memory.depth_buffer, plan.depth_test ? samples : 0, std::numeric_limits<Real>::infinity());
     memory.shaded.assign(bands, 0);
     memory.replaced.assign(bands, 0);
     memory.covered.assign(bands, 0);

@@ -5,6 +5,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "populate_pages.hpp"
+
 namespace phongrast::detail {
 namespace {
 
@@ -112,6 +114,7 @@ void keep_mesh_order(const SetupRecords& records, PainterOrderMemory& memory) {
     for (std::size_t chunk = 0; chunk < records.chunks; ++chunk) {
         offsets[chunk + 1] = offsets[chunk] + records.chunk_drawn[chunk].size();
     }
+    reserve_populated(memory.sorted, offsets[records.chunks]);
     memory.sorted.resize(offsets[records.chunks]);
     tbb::parallel_for(std::size_t(0), records.chunks, [&](std::size_t chunk) {
         PaintRecord* out = memory.sorted.data() + offsets[chunk];
@@ -163,6 +166,7 @@ void scatter_by_digit(const SetupRecords& records, const Digit& digit, PainterOr
         }
     }
     bucket_start[kBuckets] = total;
+    reserve_populated(memory.sorted, total);
     memory.sorted.resize(total);
     tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
         Counts& cursor = memory.group_counts[group];

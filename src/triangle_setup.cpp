@@ -8,6 +8,7 @@
 #include "back_faces.hpp"
 #include "clipping.hpp"
 #include "painter_order.hpp"
+#include "populate_pages.hpp"
 #include "raster.hpp"
 #include "term_counts.hpp"
 
@@ -445,11 +446,11 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
         std::vector<DrawnTriangle>& drawn = draws.chunk_drawn[chunk];
         std::vector<std::uint64_t>& keys = draws.chunk_keys[chunk];
         out.clear();
-        out.reserve(end - begin);
+        reserve_populated(out, end - begin);
         drawn.clear();
-        drawn.reserve(end - begin);
+        reserve_populated(drawn, end - begin);
         keys.clear();
-        keys.reserve(end - begin);
+        reserve_populated(keys, end - begin);
         draws.chunk_clip_vertices[chunk].clear();
         TriangleSetup<Real> setup(input, out, draws.chunk_clip_vertices[chunk], draws.chunk_counts[chunk],
                                   draws.chunk_vectors[chunk]);
