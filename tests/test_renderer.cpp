@@ -253,7 +253,7 @@ TEST_CASE("render() from a progress callback gets its own memory; a failed call 
         return true;
     };
     const RenderResult with_nested = render(outer, nested);
-    REQUIRE(inner_images.size() == 2);
+    REQUIRE_FALSE(inner_images.empty());  // a small frame reports at least once, from inside the call
     for (const Image& image : inner_images) CHECK(test_render_modes::same_bits(image, inner_alone.image));
     CHECK(test_render_modes::same_bits(with_nested.image, outer_alone.image));
 

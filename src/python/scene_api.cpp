@@ -532,6 +532,12 @@ void bind_rendering(py::module_& module) {
         "stats is a dict (triangles drawn, dropped, clipped, samples, seconds, ...). mode=\"exact\" by default.\n\n") +
         option_keywords_doc).c_str());
 
+    module.def("release_render_memory", [] { release_render_memory(); },
+               "release_render_memory() -> None\n\n"
+               "Frees the working memory that render() and render_object() keep for the calling thread's next call "
+               "(kept after frames of at most 262,144 triangles and 2048 x 2048 samples; freed anyway when the "
+               "thread ends). The pictures do not depend on it.");
+
     py::class_<PyRenderer>(module, "Renderer", (std::string(R"(Renders frame after frame, keeping its buffers and worker threads.
 
 Renderer(**options); renderer.render(scene) -> (image, stats), the same pictures
