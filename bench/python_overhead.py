@@ -133,6 +133,13 @@ def main():
         ok &= report(f"render_object(3 x Nv arrays, mode=\"exact\") vs a C++ Renderer frame, {label}",
                      *measure(lambda: phongrast.render_object(*arguments, mode="exact", **options),
                               lambda: cpp_renderer._cpp_render_seconds(scene, 1), repeats))
+        # The same from fresh memory, as every call was before render() kept its thread's memory
+        # (the release is timed with the call: a fresh call freed its memory before returning).
+        # Informative: not counted against the budget.
+        report(f"(fresh memory) release_render_memory() + render_object vs a C++ Renderer frame, {label}",
+               *measure(lambda: (phongrast.release_render_memory(),
+                                 phongrast.render_object(*arguments, mode="exact", **options)),
+                        lambda: cpp_renderer._cpp_render_seconds(scene, 1), repeats))
         ok &= report(f"Renderer.render(scene), {label}",
                      *measure(lambda: python_renderer.render(scene), lambda: cpp_renderer._cpp_render_seconds(scene, 1),
                               repeats))
