@@ -14,11 +14,11 @@
 #include <optional>
 #include <vector>
 
-#include "clipping.hpp"
 #include "phongrast/image.hpp"
 #include "phongrast/texture.hpp"
 #include "raster.hpp"
 #include "shading.hpp"
+#include "varyings.hpp"
 
 namespace phongrast::detail {
 

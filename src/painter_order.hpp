@@ -20,9 +20,9 @@
 #include <functional>
 #include <vector>
 
+#include "draw_span.hpp"
 #include "phongrast/mesh.hpp"
 #include "progress_monitor.hpp"
-#include "triangle_setup.hpp"
 #include "vertex_stage.hpp"
 
 namespace phongrast::detail {
