@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "fill_dispatch.hpp"
 #include "prefetch.hpp"
 #include "resize_polling.hpp"
 #include "term_counts.hpp"

@@ -16,7 +16,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "fill_types.hpp"
+#include "fill_dispatch.hpp"
 
 // This header is compiled once per instruction set: the library's sources see
 // the baseline kernels; fill_kernels_avx2.cpp defines these two macros and

@@ -1,17 +1,15 @@
 // What the fill kernels and the pipeline share (internal header): the set-up
-// triangle, the rows a task fills, the per-render constants, the kernel
-// signature and what chooses a kernel.
+// triangle, the rows a task fills, the per-render constants and the kernel
+// signature. What chooses a kernel is in fill_dispatch.hpp.
 //
 // Kept apart from fill_kernels.hpp, which is compiled once per instruction
-// set (see fill_kernels_avx2.cpp): these types and functions are compiled
-// for the baseline instruction set only, and every kernel, whatever its
-// instruction set, takes them.
+// set (see fill_kernels_avx2.cpp): every kernel, whatever its instruction
+// set, takes these types.
 #ifndef PHONGRAST_SRC_FILL_TYPES_HPP
 #define PHONGRAST_SRC_FILL_TYPES_HPP
 
 #include <algorithm>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "phongrast/image.hpp"
@@ -127,38 +125,6 @@ struct FillConstants {
 template <typename Real>
 using FillKernel = void (*)(const FillTriangle<Real>&, FillTarget<Real>&, LightVectorsAt<Real>&,
                             const FillConstants<Real>&);
-
-/// What decides the kernel.
-struct KernelChoice {
-    bool phong = false;
-    bool flat = false;
-    bool perspective = true;
-    bool specialized = true;
-    bool per_sample_vectors = true;
-    bool uniform_color = true;
-    bool textured = false;  ///< some material has a texture: the textured kernels
-    EffectSet effects;
-};
-
-/// The kernel for `choice` compiled for the best instruction set this build
-/// and this CPU have (kernel_isa()). Every instruction set computes the same
-/// image bit for bit: the same IEEE operations in the same order, no fused
-/// multiply-add.
-template <typename Real>
-FillKernel<Real> pick_fill_kernel(const KernelChoice& choice);
-
-enum class KernelIsa {
-    baseline,  ///< the build's target (x86-64: SSE2, 4 floats per instruction)
-    avx2,      ///< AVX2: 8 floats per instruction (x86-64 GCC builds, on CPUs that have it)
-};
-/// What pick_fill_kernel() uses now.
-KernelIsa kernel_isa();
-const char* to_string(KernelIsa isa);
-/// For tests that compare instruction sets: use `isa` from now on (it must
-/// be one kernel_isa_available() accepts), or the best one again with nullopt.
-void override_kernel_isa(std::optional<KernelIsa> isa);
-/// Whether this build has kernels for `isa` and this CPU can run them.
-bool kernel_isa_available(KernelIsa isa);
 
 }  // namespace phongrast::detail
 

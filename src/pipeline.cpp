@@ -4,7 +4,7 @@
 #include "pipeline.hpp"
 
 #include "back_faces.hpp"
-#include "scene_analysis.hpp"
+#include "effects.hpp"
 #include "term_counts.hpp"
 #include "view.hpp"
 

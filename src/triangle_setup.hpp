@@ -9,9 +9,9 @@
 #include <memory>
 #include <vector>
 
+#include "closed_mesh.hpp"
 #include "draw_span.hpp"
 #include "fill_types.hpp"
-#include "scene_analysis.hpp"
 #include "vertex_stage.hpp"
 
 namespace phongrast::detail {

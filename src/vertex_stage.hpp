@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "normals_scratch.hpp"
+#include "normals.hpp"
 #include "phongrast/render.hpp"
 #include "progress_monitor.hpp"
 #include "shading.hpp"

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "effects.hpp"
 #include "fill_driver.hpp"
 #include "triangle_setup.hpp"
 
