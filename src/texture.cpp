@@ -149,9 +149,9 @@ const std::vector<MipLevel>& TextureImage::mip_levels() const {
 
 double mip_lambda(double ds_dx, double dt_dx, double ds_dy, double dt_dy, int columns, int rows) {
     const double ux = ds_dx * columns, vx = dt_dx * rows, uy = ds_dy * columns, vy = dt_dy * rows;
-    const double rho2 = std::max(ux * ux + vx * vx, uy * uy + vy * vy);
-    if (std::isnan(rho2)) return std::numeric_limits<double>::infinity();
-    return 0.5 * std::log2(rho2);  // log2(0) = -infinity: magnified
+    const double along_x = ux * ux + vx * vx, along_y = uy * uy + vy * vy;
+    if (std::isnan(along_x) || std::isnan(along_y)) return std::numeric_limits<double>::infinity();
+    return 0.5 * std::log2(std::max(along_x, along_y));  // log2(0) = -infinity: magnified
 }
 
 glm::dvec3 sample_trilinear(const TextureMap& map, double s, double t, double lambda) {
