@@ -595,7 +595,7 @@ TEST_CASE("textured Gouraud with a white texture is the untextured Gouraud pictu
         for (bool seed : {false, true}) {
             if (seed && !c.seed_too) continue;
             for (Precision precision : {Precision::single_float, Precision::double_float}) {
-                for (TextureFilter filter : {TextureFilter::bilinear, TextureFilter::nearest}) {
+                for (TextureFilter filter : {TextureFilter::bilinear, TextureFilter::nearest, TextureFilter::trilinear}) {
                     RenderOptions options = seed ? RenderOptions::seed() : RenderOptions::exact();
                     options.precision = precision;
                     options.texture_filter = filter;
