@@ -172,6 +172,17 @@ PHONGRAST_FILL_INLINE Vec3<Real> texture_at(const KernelTexture& texture, Real s
            a * b * texel(i1, j1);
 }
 
+/// rho^2 of texture_lambda(): the larger squared length, +infinity for NaN.
+template <typename Real>
+PHONGRAST_FILL_INLINE Real texture_footprint2(const KernelTexture& texture, Real ds_dx, Real dt_dx, Real ds_dy,
+                                              Real dt_dy) {
+    const Real columns = static_cast<Real>(texture.columns), rows = static_cast<Real>(texture.rows);
+    const Real ux = ds_dx * columns, vx = dt_dx * rows, uy = ds_dy * columns, vy = dt_dy * rows;
+    const Real along_x = ux * ux + vx * vx, along_y = uy * uy + vy * vy;
+    if (std::isnan(along_x) || std::isnan(along_y)) return std::numeric_limits<Real>::infinity();
+    return along_x < along_y ? along_y : along_x;
+}
+
 /// The trilinear filter's level of detail in Real (mip_lambda() in
 /// src/texture.cpp, in double): log2 of the larger of the lengths of
 /// (ds/dx W, dt/dx H) and (ds/dy W, dt/dy H), in level-0 texels per step.
@@ -180,11 +191,7 @@ PHONGRAST_FILL_INLINE Vec3<Real> texture_at(const KernelTexture& texture, Real s
 template <typename Real>
 PHONGRAST_FILL_INLINE Real texture_lambda(const KernelTexture& texture, Real ds_dx, Real dt_dx, Real ds_dy,
                                           Real dt_dy) {
-    const Real columns = static_cast<Real>(texture.columns), rows = static_cast<Real>(texture.rows);
-    const Real ux = ds_dx * columns, vx = dt_dx * rows, uy = ds_dy * columns, vy = dt_dy * rows;
-    const Real along_x = ux * ux + vx * vx, along_y = uy * uy + vy * vy;
-    if (std::isnan(along_x) || std::isnan(along_y)) return std::numeric_limits<Real>::infinity();
-    return Real(0.5) * std::log2(along_x < along_y ? along_y : along_x);
+    return Real(0.5) * std::log2(texture_footprint2(texture, ds_dx, dt_dx, ds_dy, dt_dy));
 }
 
 /// Level `level` (1 ... mip_level_count) of a trilinear texture as a bilinear KernelTexture.
@@ -244,13 +251,18 @@ inline void texture_lanes_trilinear(const DrawTriangle<Real>& draw, int n, const
     };
     const Real s_x = sum(gx, 0), t_x = sum(gx, 1), s_y = sum(gy, 0), t_y = sum(gy, 1);
     const Real g_x = (gx[0] + gx[1]) + gx[2], g_y = (gy[0] + gy[1]) + gy[2];
+    KernelTexture level0 = texture;
+    level0.filter = TextureFilter::bilinear;
     for (int l = 0; l < n; ++l) {
         const Real depth = texture.perspective
                                ? (w[0][l] * draw.depth[0] + w[1][l] * draw.depth[1]) + w[2][l] * draw.depth[2]
                                : Real(1);
-        const Real lambda = texture_lambda(texture, depth * (s_x - s[l] * g_x), depth * (t_x - t[l] * g_x),
-                                           depth * (s_y - s[l] * g_y), depth * (t_y - t[l] * g_y));
-        const Vec3<Real> value = texture_at_trilinear<Real>(texture, s[l], t[l], lambda);
+        const Real rho2 = texture_footprint2(texture, depth * (s_x - s[l] * g_x), depth * (t_x - t[l] * g_x),
+                                             depth * (s_y - s[l] * g_y), depth * (t_y - t[l] * g_y));
+        // rho^2 <= 1 is lambda <= 0 (magnified: level 0), without the logarithm.
+        const Vec3<Real> value = rho2 <= Real(1)
+                                     ? texture_at<Real>(level0, s[l], t[l])
+                                     : texture_at_trilinear<Real>(texture, s[l], t[l], Real(0.5) * std::log2(rho2));
         for (int c = 0; c < 3; ++c) texel[c][l] = value[c];
     }
 }
