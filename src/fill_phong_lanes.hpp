@@ -234,7 +234,7 @@ PHONGRAST_FILL_INLINE Vec3<Real> texture_at_trilinear(const KernelTexture& textu
 /// weights (z_i taken as 1) that is the constant sum_i dw_i/dx s_i. x and y
 /// step one sample, scaled by texture.footprint_scale.
 template <typename Real>
-inline void texture_lanes_trilinear(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const Lanes<Real>& s,
+inline void texture_lanes_trilinear(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w, const Lanes<Real>& s,
                                     const Lanes<Real>& t, const KernelTexture& texture, Lanes<Real>* texel) {
     const SnappedTriangle& coverage = draw.coverage;
     const Real scale = static_cast<Real>(texture.footprint_scale) / static_cast<Real>(coverage.area2());
