@@ -205,6 +205,21 @@ inline KernelTexture texture_level(const KernelTexture& texture, int level) {
     return view;
 }
 
+/// A texture coordinate taken into the wrap mode's period, which every level
+/// shares (each spans [0, 1]): s - floor(s) for repeat, s - 2 floor(s / 2)
+/// for mirrored repeat (rounded by at most half an ulp of the period), as it
+/// is for clamp. The lookups then mostly stay inside the image and skip
+/// texture_at()'s wrap arithmetic; non-finite coordinates stay non-finite (T = 1).
+template <typename Real>
+PHONGRAST_FILL_INLINE Real one_period(Real coordinate, TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::repeat: return coordinate - std::floor(coordinate);
+        case TextureWrap::mirrored_repeat: return coordinate - Real(2) * std::floor(coordinate * Real(0.5));
+        case TextureWrap::clamp_to_edge:
+        default: return coordinate;
+    }
+}
+
 /// GL_LINEAR_MIPMAP_LINEAR at (s, t) with level of detail lambda (as
 /// sample_trilinear() in double): lambda <= 0 is the bilinear lookup on level 0
 /// exactly (texture_at()), lambda >= the last level q bilinear on level q,
@@ -216,6 +231,10 @@ PHONGRAST_FILL_INLINE Vec3<Real> texture_at_trilinear(const KernelTexture& textu
     level0.filter = TextureFilter::bilinear;
     if (std::isnan(lambda)) lambda = std::numeric_limits<Real>::infinity();
     if (!(lambda > Real(0)) || texture.mip_level_count == 0) return texture_at<Real>(level0, s, t);
+    // Minified: (s, t) into one period first (the magnified lookup above
+    // keeps bilinear's operations, so its picture stays bilinear's bit for bit).
+    s = one_period(s, texture.wrap_s);
+    t = one_period(t, texture.wrap_t);
     const int last = texture.mip_level_count;
     if (lambda >= static_cast<Real>(last)) return texture_at<Real>(texture_level(texture, last), s, t);
     const Real floor_lambda = std::floor(lambda), fraction = lambda - floor_lambda;
