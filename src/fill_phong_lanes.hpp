@@ -172,6 +172,120 @@ PHONGRAST_FILL_INLINE Vec3<Real> texture_at(const KernelTexture& texture, Real s
            a * b * texel(i1, j1);
 }
 
+/// rho^2 of texture_lambda(): the larger squared length, +infinity for NaN.
+template <typename Real>
+PHONGRAST_FILL_INLINE Real texture_footprint2(const KernelTexture& texture, Real ds_dx, Real dt_dx, Real ds_dy,
+                                              Real dt_dy) {
+    const Real columns = static_cast<Real>(texture.columns), rows = static_cast<Real>(texture.rows);
+    const Real ux = ds_dx * columns, vx = dt_dx * rows, uy = ds_dy * columns, vy = dt_dy * rows;
+    const Real along_x = ux * ux + vx * vx, along_y = uy * uy + vy * vy;
+    if (std::isnan(along_x) || std::isnan(along_y)) return std::numeric_limits<Real>::infinity();
+    return along_x < along_y ? along_y : along_x;
+}
+
+/// The trilinear filter's level of detail in Real (mip_lambda() in
+/// src/texture.cpp, in double): log2 of the larger of the lengths of
+/// (ds/dx W, dt/dx H) and (ds/dy W, dt/dy H), in level-0 texels per step.
+/// Zero derivatives give -infinity (magnified: level 0); a NaN or infinite
+/// one, or lengths too long for Real, +infinity (the last level).
+template <typename Real>
+PHONGRAST_FILL_INLINE Real texture_lambda(const KernelTexture& texture, Real ds_dx, Real dt_dx, Real ds_dy,
+                                          Real dt_dy) {
+    return Real(0.5) * std::log2(texture_footprint2(texture, ds_dx, dt_dx, ds_dy, dt_dy));
+}
+
+/// Level `level` (1 ... mip_level_count) of a trilinear texture as a bilinear KernelTexture.
+inline KernelTexture texture_level(const KernelTexture& texture, int level) {
+    KernelTexture view = texture;
+    const MipLevel& reduced = texture.mip_levels[level - 1];
+    view.texels = reduced.texels.data();
+    view.rows = reduced.rows;
+    view.columns = reduced.columns;
+    view.filter = TextureFilter::bilinear;
+    return view;
+}
+
+/// A texture coordinate taken into the wrap mode's period, which every level
+/// shares (each spans [0, 1]): s - floor(s) for repeat, s - 2 floor(s / 2)
+/// for mirrored repeat (rounded by at most half an ulp of the period), as it
+/// is for clamp. The lookups then mostly stay inside the image and skip
+/// texture_at()'s wrap arithmetic; non-finite coordinates stay non-finite (T = 1).
+template <typename Real>
+PHONGRAST_FILL_INLINE Real one_period(Real coordinate, TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::repeat: return coordinate - std::floor(coordinate);
+        case TextureWrap::mirrored_repeat: return coordinate - Real(2) * std::floor(coordinate * Real(0.5));
+        case TextureWrap::clamp_to_edge:
+        default: return coordinate;
+    }
+}
+
+/// GL_LINEAR_MIPMAP_LINEAR at (s, t) with level of detail lambda (as
+/// sample_trilinear() in double): lambda <= 0 is the bilinear lookup on level 0
+/// exactly (texture_at()), lambda >= the last level q bilinear on level q,
+/// between them the bilinear lookups on levels floor(lambda) and one below,
+/// blended by lambda - floor(lambda). NaN counts as +infinity.
+template <typename Real>
+PHONGRAST_FILL_INLINE Vec3<Real> texture_at_trilinear(const KernelTexture& texture, Real s, Real t, Real lambda) {
+    KernelTexture level0 = texture;
+    level0.filter = TextureFilter::bilinear;
+    if (std::isnan(lambda)) lambda = std::numeric_limits<Real>::infinity();
+    if (!(lambda > Real(0)) || texture.mip_level_count == 0) return texture_at<Real>(level0, s, t);
+    // Minified: (s, t) into one period first (the magnified lookup above
+    // keeps bilinear's operations, so its picture stays bilinear's bit for bit).
+    s = one_period(s, texture.wrap_s);
+    t = one_period(t, texture.wrap_t);
+    const int last = texture.mip_level_count;
+    if (lambda >= static_cast<Real>(last)) return texture_at<Real>(texture_level(texture, last), s, t);
+    const Real floor_lambda = std::floor(lambda), fraction = lambda - floor_lambda;
+    const int d = static_cast<int>(floor_lambda);
+    const Vec3<Real> finer = d == 0 ? texture_at<Real>(level0, s, t) : texture_at<Real>(texture_level(texture, d), s, t);
+    const Vec3<Real> coarser = texture_at<Real>(texture_level(texture, d + 1), s, t);
+    return (Real(1) - fraction) * finer + fraction * coarser;
+}
+
+/// T of n lanes with the trilinear filter into texel[3]: (s, t) and their
+/// screen-space derivatives at each sample. Vertex i's weight is E_i / (2 area)
+/// (the edge function opposite it), divided by its depth z_i and renormalised
+/// when perspective-correct: w_i = q_i / sum_j q_j with q_i linear on the
+/// screen. By the quotient rule ds/dx = Z sum_i dq_i/dx (s_i - s), where
+/// Z = 1 / sum_j q_j = sum_i w_i z_i (the sample's depth); with screen-linear
+/// weights (z_i taken as 1) that is the constant sum_i dw_i/dx s_i. x and y
+/// step one sample, scaled by texture.footprint_scale.
+template <typename Real>
+inline void texture_lanes_trilinear(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w, const Lanes<Real>& s,
+                                    const Lanes<Real>& t, const KernelTexture& texture, Lanes<Real>* texel) {
+    const SnappedTriangle& coverage = draw.coverage;
+    const Real scale = static_cast<Real>(texture.footprint_scale) / static_cast<Real>(coverage.area2());
+    Real gx[3], gy[3];
+    for (int i = 0; i < 3; ++i) {
+        const CompactPoint& a = coverage.v[(i + 1) % 3];
+        const CompactPoint& b = coverage.v[(i + 2) % 3];
+        const Real weight_scale = texture.perspective ? scale / draw.depth[i] : scale;
+        gx[i] = static_cast<Real>(-(std::int64_t(b.y) - a.y) * kSubpixelScale) * weight_scale;
+        gy[i] = static_cast<Real>((std::int64_t(b.x) - a.x) * kSubpixelScale) * weight_scale;
+    }
+    const auto sum = [&](const Real* g, int channel) {
+        return (g[0] * draw.v[0]->lit[channel] + g[1] * draw.v[1]->lit[channel]) + g[2] * draw.v[2]->lit[channel];
+    };
+    const Real s_x = sum(gx, 0), t_x = sum(gx, 1), s_y = sum(gy, 0), t_y = sum(gy, 1);
+    const Real g_x = (gx[0] + gx[1]) + gx[2], g_y = (gy[0] + gy[1]) + gy[2];
+    KernelTexture level0 = texture;
+    level0.filter = TextureFilter::bilinear;
+    for (int l = 0; l < n; ++l) {
+        const Real depth = texture.perspective
+                               ? (w[0][l] * draw.depth[0] + w[1][l] * draw.depth[1]) + w[2][l] * draw.depth[2]
+                               : Real(1);
+        const Real rho2 = texture_footprint2(texture, depth * (s_x - s[l] * g_x), depth * (t_x - t[l] * g_x),
+                                             depth * (s_y - s[l] * g_y), depth * (t_y - t[l] * g_y));
+        // rho^2 <= 1 is lambda <= 0 (magnified: level 0), without the logarithm.
+        const Vec3<Real> value = rho2 <= Real(1)
+                                     ? texture_at<Real>(level0, s[l], t[l])
+                                     : texture_at_trilinear<Real>(texture, s[l], t[l], Real(0.5) * std::log2(rho2));
+        for (int c = 0; c < 3; ++c) texel[c][l] = value[c];
+    }
+}
+
 /// Multiplies each lane's colour by T at its (s, t), which Phong's textured
 /// faces carry in their vertices' `lit` (interpolated like every attribute).
 template <typename Real>
@@ -181,6 +295,14 @@ inline void texture_lanes(const FillTriangle<Real>& draw, int n, const Lanes<Rea
     Lanes<Real> s, t;
     interpolate_lanes(n, w, draw.v[0]->lit[0], draw.v[1]->lit[0], draw.v[2]->lit[0], s);
     interpolate_lanes(n, w, draw.v[0]->lit[1], draw.v[1]->lit[1], draw.v[2]->lit[1], t);
+    if (texture.filter == TextureFilter::trilinear) {
+        Lanes<Real> texel[3];
+        texture_lanes_trilinear(draw, n, w, s, t, texture, texel);
+        for (int c = 0; c < 3; ++c) {
+            for (int l = 0; l < n; ++l) color[c][l] *= texel[c][l];
+        }
+        return;
+    }
     for (int l = 0; l < n; ++l) {
         const Vec3<Real> texel = texture_at<Real>(texture, s[l], t[l]);
         for (int c = 0; c < 3; ++c) color[c][l] *= texel[c];

@@ -106,6 +106,16 @@ struct KernelTexture {
     int rows = 0, columns = 0;
     TextureWrap wrap_s = TextureWrap::repeat, wrap_t = TextureWrap::repeat;
     TextureFilter filter = TextureFilter::bilinear;
+    /// Trilinear only: levels 1, 2, ... of the image's pyramid (TextureImage::mip_levels()).
+    const MipLevel* mip_levels = nullptr;
+    int mip_level_count = 0;
+    /// Trilinear only: whether the fill's weights are perspective-correct,
+    /// which decides how (s, t)'s derivatives follow from them.
+    bool perspective = true;
+    /// Trilinear only: one sample's footprint in steps of this pass's sample
+    /// grid (1 for one sample per pixel and the ordered grid; 1 / s for each
+    /// of the rotated grid's passes at pixel spacing).
+    double footprint_scale = 1.0;
 };
 
 /// Per-render constants the kernels read.

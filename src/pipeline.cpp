@@ -30,8 +30,11 @@ void build_surface_shaders(const Scene& scene, const AssembledScene& assembled, 
 /// A textured scene: each material's texture as the kernels read it, and
 /// (s, t) of each vertex in its `lit` (Phong reads no lit colour), from
 /// where clipping and the fill interpolate it like every attribute.
+/// `footprint_scale`: one sample's footprint in steps of the pass's sample
+/// grid (trilinear; see KernelTexture).
 template <typename Real>
-void prepare_textures(const AssembledScene& assembled, const RenderOptions& options, FrameMemory<Real>& memory) {
+void prepare_textures(const AssembledScene& assembled, const RenderOptions& options, bool perspective,
+                      double footprint_scale, FrameMemory<Real>& memory) {
     memory.surface_textures.assign(assembled.surfaces.size(), KernelTexture{});
     for (std::size_t s = 0; s < assembled.surfaces.size(); ++s) {
         const std::optional<TextureMap>& map = assembled.surfaces[s].texture;
@@ -43,6 +46,14 @@ void prepare_textures(const AssembledScene& assembled, const RenderOptions& opti
         texture.wrap_s = map->wrap_s;
         texture.wrap_t = map->wrap_t;
         texture.filter = options.texture_filter;
+        if (options.texture_filter == TextureFilter::trilinear) {
+            // Built on the first frame that asks, then kept with the image (shared by every user).
+            const std::vector<MipLevel>& levels = map->image->mip_levels();
+            texture.mip_levels = levels.data();
+            texture.mip_level_count = static_cast<int>(levels.size());
+            texture.perspective = perspective;
+            texture.footprint_scale = footprint_scale;
+        }
     }
 }
 
@@ -102,7 +113,15 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     const bool several = assembled != nullptr && !assembled->single_surface();
     if (several) build_surface_shaders(scene, *assembled, view, point_shader, memory);
     const bool textured = assembled != nullptr && assembled->textured();
-    if (textured) prepare_textures(*assembled, options, memory);
+    if (textured) {
+        // The pass has `density` samples per pixel along each axis (the
+        // ordered grid's s, or 1 for each rotated-grid pass); a sample's
+        // footprint is 1 / samples_per_axis of a pixel either way.
+        const int density = std::max(1, rows / scene.image.rows);
+        prepare_textures(*assembled, options, perspective_weights(scene, options),
+                         static_cast<double>(density) / static_cast<double>(std::max(1, options.samples_per_axis)),
+                         memory);
+    }
     // Untextured Gouraud's `lit` is its lit colour; textured Gouraud keeps
     // that (A) apart, in the draws, and (s, t) in `lit` too.
     const bool texcoords_in_lit = assembled != nullptr && !assembled->texcoords.empty() &&

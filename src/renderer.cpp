@@ -78,7 +78,6 @@ struct RendererState final : PassRenderer {
         assembled = needs_assembly(requested) ? &assembly.assemble(requested) : nullptr;
         const Scene& rendered = assembled != nullptr ? assembled->scene : requested;
         validate_render_request(rendered, options);
-        if (assembled != nullptr) validate_textured_request(*assembled, rendered, options);
         ProgressMonitor monitor(options.progress);
         const int factor = options.samples_per_axis;
         progress = &monitor;
@@ -149,7 +148,6 @@ void validate_render(const Scene& scene, const RenderOptions& options) {
         detail::NormalsScratch scratch;
         detail::assemble_scene(scene, assembled, scratch);
         detail::validate_render_request(assembled.scene, options);
-        detail::validate_textured_request(assembled, assembled.scene, options);
     } else {
         detail::validate_render_request(scene, options);
     }

@@ -60,10 +60,6 @@ bool needs_assembly(const Scene& scene);
 /// Kept apart from validate_render_request(), which then checks the assembled scene.
 void validate_scene_objects(const Scene& scene);
 
-/// What textured scenes cannot have yet: the trilinear filter. Throws
-/// std::invalid_argument naming the field.
-void validate_textured_request(const AssembledScene& assembled, const Scene& scene, const RenderOptions& options);
-
 /// A Renderer's assembly, kept from frame to frame: an objects scene whose
 /// meshes (by address and size), transforms, materials and normal sources
 /// are those of the previous frame is not assembled again. A `mesh` scene

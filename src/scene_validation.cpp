@@ -144,14 +144,3 @@ void validate_scene_objects(const Scene& scene) {
 }
 
 }  // namespace phongrast::detail
-
-namespace phongrast::detail {
-
-void validate_textured_request(const AssembledScene& assembled, const Scene&, const RenderOptions& options) {
-    if (!assembled.textured()) return;
-    if (options.texture_filter == TextureFilter::trilinear) {
-        throw std::invalid_argument("texture_filter: trilinear is not implemented yet; use bilinear or nearest");
-    }
-}
-
-}  // namespace phongrast::detail

@@ -120,7 +120,7 @@ TEST_CASE("AVX2 kernels paint the baseline kernels' textured image bit for bit")
             scene.shader = shader;
             for (Lighting lighting : {Lighting::full(), Lighting::only_ambient(), Lighting::only_specular()}) {
                 scene.lighting = lighting;
-                for (TextureFilter filter : {TextureFilter::bilinear, TextureFilter::nearest}) {
+                for (TextureFilter filter : {TextureFilter::bilinear, TextureFilter::nearest, TextureFilter::trilinear}) {
                     for (test_render_modes::RenderMode mode : test_render_modes::preset_precision_kernel_modes()) {
                         mode.options.texture_filter = filter;
                         const RenderResult baseline = render_with(detail::KernelIsa::baseline, scene, mode.options);

@@ -114,7 +114,7 @@ TEST_CASE("textured scenes: shade_visible paints shade_all's image bit for bit, 
         Scene scene = textured_scene(seed, wraps[seed % 3], wraps[(seed + 1) % 3]);
         for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
             scene.shader = shader;
-            for (TextureFilter filter : {TextureFilter::bilinear, TextureFilter::nearest}) {
+            for (TextureFilter filter : {TextureFilter::bilinear, TextureFilter::nearest, TextureFilter::trilinear}) {
                 for (test_render_modes::RenderMode mode : test_render_modes::preset_precision_kernel_modes()) {
                     mode.options.threads = 1 + static_cast<int>(seed % 2);
                     mode.options.texture_filter = filter;
