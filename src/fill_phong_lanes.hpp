@@ -211,8 +211,8 @@ PHONGRAST_FILL_INLINE void bilinear_lanes(const KernelTexture& texture, int n, c
         a[l] = x - static_cast<Real>(j);
         b[l] = y - static_cast<Real>(i);
         offset[l] = i * stride + j;
-        inside[l] = in ? 1 : 0;
-        outside += in ? 0 : 1;
+        inside[l] = in;
+        outside += 1 - inside[l];  // (written so, the loop vectorises: GCC 12)
     }
     Lanes<Real> t00[3], t01[3], t10[3], t11[3];
     for (int l = 0; l < n; ++l) {
