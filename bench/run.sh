@@ -10,13 +10,15 @@
 #   bench/run.sh llvmpipe [--quick] [bench_llvmpipe flags]    docs/llvmpipe.md: times and image agreement
 #   bench/run.sh goals [--quick] [--no-huge]                  ambient-only / full lighting, peak memory per scene
 #   bench/run.sh all [--quick] [--no-huge]                    the goals per scene class (a summary table each),
-#                                                             then llvmpipe, goals, speed --steps and scaling
-#                                                             (bench/run_all.sh runs it)
+#                                                             each mesh in every order of ORDERS, then llvmpipe,
+#                                                             goals, speed --steps and scaling (bench/run_all.sh)
 #
 # --quick runs a small subset of each, in seconds to a few minutes, to check
 # that everything works; its numbers are not for the docs. Without it the
 # 8M-triangle mesh at 2048x2048 is included (--no-huge leaves it out).
-# Environment: BUILD_DIR (default build/bench-release), REPEAT (timed rounds, default 5).
+# Environment: BUILD_DIR (default build/bench-release), REPEAT (timed rounds, default 5),
+# ORDERS (for all: the meshes' orders, default "generator spatial shuffled";
+# bench/mesh_orders.hpp; llvmpipe and goals take --order ORDER themselves).
 # Needs the packages of cmake/debian-packages.txt (Google Benchmark; OSMesa for
 # llvmpipe) and Debian's /usr/bin/python3; --callgrind also needs valgrind
 # (apt-get install valgrind: a measuring tool, not in the package list).
@@ -29,7 +31,7 @@ python=/usr/bin/python3
 [ -x "$python" ] || python=python3
 
 usage() {
-  sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
 }
 
@@ -176,15 +178,26 @@ accuracy() {
 
 # llvmpipe reads LP_NUM_THREADS only when its first context is created, so each thread count is its own process.
 llvmpipe() {
-  local args=(--repeat "$repeat")
+  local args=(--repeat "$repeat") order=generator
   if [ "${1:-}" = --quick ]; then
     shift
     args=(--repeat 1 --seconds 0 --no-large --no-assets --no-huge)
   fi
+  # --order ORDER (bench/mesh_orders.hpp): each order's measurements in files of their own.
+  local rest=()
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --order) order="$2"; shift ;;
+      *) rest+=("$1") ;;
+    esac
+    shift
+  done
   build bench_llvmpipe
-  local bin="$build/bench/llvmpipe/bench_llvmpipe" one="$build/llvmpipe-1-thread.txt" two="$build/llvmpipe-2-threads.txt"
-  "$bin" --threads 1 "${args[@]}" "$@" >"$one"
-  "$bin" --threads 2 --images "$build/llvmpipe-images" "${args[@]}" "$@" >"$two"
+  local bin="$build/bench/llvmpipe/bench_llvmpipe" suffix=""
+  [ "$order" = generator ] || suffix="-$order"
+  local one="$build/llvmpipe-1-thread$suffix.txt" two="$build/llvmpipe-2-threads$suffix.txt"
+  "$bin" --threads 1 --order "$order" "${args[@]}" "${rest[@]}" >"$one"
+  "$bin" --threads 2 --order "$order" --images "$build/llvmpipe-images$suffix" "${args[@]}" "${rest[@]}" >"$two"
   head -n 1 "$one"
   head -n 1 "$two"
   echo
@@ -192,19 +205,20 @@ llvmpipe() {
   echo
   sed -n '/Image agreement/,$p' "$two"
   echo
-  echo "Renders and difference heat maps: $build/llvmpipe-images"
+  echo "Renders and difference heat maps: $build/llvmpipe-images$suffix"
 }
 
 # bench_goals, one process per scene (phongrast alone: llvmpipe's memory must not count);
 # at least REPEAT rounds, more for small scenes (to fill 2 s), at most 3 for the
 # 8M-triangle mesh, whose frames take seconds.
 goals() {
-  local quick=0 list=()
+  local quick=0 list=() order=()
   while [ $# -gt 0 ]; do
     case "$1" in
       --quick) quick=1; list+=(--no-assets --no-large --no-huge) ;;
       --no-huge) list+=(--no-huge) ;;
-      *) echo "run.sh goals: unknown argument $1 (expected --quick or --no-huge)" >&2; exit 2 ;;
+      --order) order=(--order "$2"); shift ;;
+      *) echo "run.sh goals: unknown argument $1 (expected --quick, --no-huge or --order ORDER)" >&2; exit 2 ;;
     esac
     shift
   done
@@ -215,7 +229,7 @@ goals() {
     k=$repeat
     [ "$quick" = 1 ] && k=3 seconds=0
     [ "$scene" = icosphere-8M ] && [ "$k" -gt 3 ] && k=3
-    "$bin" --scene "$scene" --repeat "$k" --seconds "$seconds" $first
+    "$bin" --scene "$scene" --repeat "$k" --seconds "$seconds" "${order[@]}" $first
     first=""
   done
 }
@@ -239,11 +253,22 @@ all() {
   # The load average as each part starts: on a shared machine other work shifts
   # times, and not all cases alike (Phong full slows more than ambient-only).
   loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
-  echo "run.sh all: 1/4 phongrast against llvmpipe" >&2
-  llvmpipe $quick $huge >"$part-llvmpipe.md"
+  local orders=(${ORDERS:-generator spatial shuffled}) order llvmpipe_files=()
+  : >"$part-llvmpipe.md"
+  : >"$part-goals.md"
+  for order in "${orders[@]}"; do
+    echo "run.sh all: 1/4 phongrast against llvmpipe, meshes in the $order order" >&2
+    { echo "### Meshes in the $order order"; echo; llvmpipe $quick $huge --order "$order"; echo; } >>"$part-llvmpipe.md"
+    local suffix=""
+    [ "$order" = generator ] || suffix="-$order"
+    llvmpipe_files+=("$build/llvmpipe-1-thread$suffix.txt" "$build/llvmpipe-2-threads$suffix.txt")
+  done
   loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
-  echo "run.sh all: 2/4 ambient-only against full lighting, peak memory" >&2
-  goals $quick $huge >"$part-goals.md"
+  for order in "${orders[@]}"; do
+    echo "run.sh all: 2/4 ambient-only against full lighting, peak memory, meshes in the $order order" >&2
+    goals $quick $huge --order "$order" >>"$part-goals.md"
+    echo >>"$part-goals.md"
+  done
   loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
   echo "run.sh all: 3/4 speed steps" >&2
   speed --steps $quick >"$part-steps.md"
@@ -261,7 +286,10 @@ all() {
     echo "memory: bench_goals, phongrast alone (section 2). Load average as sections 1-4 started:"
     echo "${loads[0]}; ${loads[1]}; ${loads[2]}; ${loads[3]}."
     echo
-    "$python" bench/report.py summary "$build/llvmpipe-1-thread.txt" "$build/llvmpipe-2-threads.txt" "$part-goals.md"
+    echo "Every scene in each mesh order of ORDERS (${orders[*]}; bench/mesh_orders.hpp): rows named \"(spatial)\""
+    echo "or \"(shuffled)\" are the same mesh and picture, its vertices and faces in that order."
+    echo
+    "$python" bench/report.py summary "${llvmpipe_files[@]}" "$part-goals.md"
     echo
     echo "## 1. phongrast against llvmpipe"
     echo

@@ -17,7 +17,7 @@
 #include <CLI/CLI.hpp>
 
 // Internal: detail::override_kernel_isa, to time the instruction sets in one process.
-#include "fill_types.hpp"
+#include "fill_dispatch.hpp"
 #include "phongrast/render.hpp"
 #include "support/speed_scenes.hpp"
 #include "support/timing.hpp"

@@ -30,7 +30,7 @@ glm::vec3 world_from_camera(const CameraFrame& frame, const Vec3<Real>& camera_n
 // last one (in painter's order) whose depth equals it, since the fill's test
 // lets an equal depth overwrite.
 template <typename Real, bool Perspective>
-void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, const DrawTriangle<Real>& draw,
+void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, const FillTriangle<Real>& draw,
                     std::uint32_t source, int row_begin, int row_end, AovSamples& out) {
     const Real inverse_area = Real(1) / static_cast<Real>(draw.coverage.area2());
     Real inverse_depth[3];
@@ -123,9 +123,9 @@ void run_aov_pass(const AovPassInput<Real>& in, const AovRequest& planes, AovSam
         if (progress.cancelled()) return;
         const int row_begin = band * kBandRows;
         const int row_end = std::min(out.rows, row_begin + kBandRows);
-        const DrawTriangle<Real>* const* draws = bins.band_draws(band);
+        const FillTriangle<Real>* const* draws = bins.band_draws(band);
         for (std::uint32_t i = 0; i < bins.band_size(band); ++i) {
-            const DrawTriangle<Real>& draw = *draws[i];
+            const FillTriangle<Real>& draw = *draws[i];
             if (in.perspective) {
                 write_triangle<Real, true>(in, planes, draw, draw.source, row_begin, row_end, out);
             } else {

@@ -5,7 +5,7 @@
 #define PHONGRAST_SRC_BACK_FACES_HPP
 
 #include "phongrast/render.hpp"
-#include "scene_analysis.hpp"
+#include "closed_mesh.hpp"
 #include "vertex_stage.hpp"
 
 namespace phongrast::detail {

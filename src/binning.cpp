@@ -4,6 +4,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "populate_pages.hpp"
+
 namespace phongrast::detail {
 namespace {
 
@@ -11,17 +13,17 @@ namespace {
 constexpr std::size_t kBinningBlock = 16384;
 
 /// Calls visit(band, draw) for every band every draw of `drawn` touches. A
-/// triangle with one draw (nearly all) is binned from its DrawnTriangle
+/// triangle with one draw (nearly all) is binned from its DrawSpan
 /// alone; only clipped ones read their draws' rows.
 template <typename Real, typename Visit>
-void for_each_band(const DrawList<Real>& draws, const DrawnTriangle& drawn, Visit&& visit) {
-    const DrawTriangle<Real>* first = draws.chunk_draws[drawn.chunk()].data() + drawn.first();
+void for_each_band(const DrawList<Real>& draws, const DrawSpan& drawn, Visit&& visit) {
+    const FillTriangle<Real>* first = draws.chunk_draws[drawn.chunk()].data() + drawn.first();
     if (drawn.single()) {
         const std::size_t band_last = static_cast<std::size_t>(drawn.band_last());
         for (std::size_t band = static_cast<std::size_t>(drawn.band_first()); band <= band_last; ++band) visit(band, first);
         return;
     }
-    for (const DrawTriangle<Real>* draw = first; draw != first + drawn.count(); ++draw) {
+    for (const FillTriangle<Real>* draw = first; draw != first + drawn.count(); ++draw) {
         const std::size_t band_last = static_cast<std::size_t>(draw->coverage.row_max / kBandRows);
         for (std::size_t band = static_cast<std::size_t>(draw->coverage.row_min / kBandRows); band <= band_last; ++band) {
             visit(band, draw);
@@ -64,14 +66,15 @@ void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, i
     memory.block_band_count.assign(blocks * bands, 0);
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
         std::uint32_t* count = &memory.block_band_count[block * bands];
-        for_each_draw_of_block(block, [&](std::size_t band, const DrawTriangle<Real>*) { ++count[band]; });
+        for_each_draw_of_block(block, [&](std::size_t band, const FillTriangle<Real>*) { ++count[band]; });
         if (poll) poll();
     });
     lay_out_bands(blocks, memory, bins);
+    reserve_populated(bins.draws, bins.band_start[bands]);
     bins.draws.resize(bins.band_start[bands]);
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
         std::uint32_t* cursor = &memory.block_band_cursor[block * bands];
-        for_each_draw_of_block(block, [&](std::size_t band, const DrawTriangle<Real>* draw) {
+        for_each_draw_of_block(block, [&](std::size_t band, const FillTriangle<Real>* draw) {
             bins.draws[cursor[band]++] = draw;
         });
         if (poll) poll();

@@ -1,4 +1,4 @@
-// Binning (internal header): the draw triangles sorted into bands of rows,
+// Binning (internal header): the fill triangles sorted into bands of rows,
 // painter's order kept within each band. Binning writes the Bins; the fill
 // only reads them, one band per task.
 #ifndef PHONGRAST_SRC_BINNING_HPP
@@ -14,14 +14,14 @@
 
 namespace phongrast::detail {
 
-/// The draw triangles of each band of kBandRows sample rows, in painter's order.
+/// The fill triangles of each band of kBandRows sample rows, in painter's order.
 template <typename Real>
 struct Bins {
     int bands = 0;
     std::vector<std::uint32_t> band_start;          ///< bands + 1 offsets into `draws`
-    std::vector<const DrawTriangle<Real>*> draws;   ///< band after band
+    std::vector<const FillTriangle<Real>*> draws;   ///< band after band
 
-    const DrawTriangle<Real>* const* band_draws(int band) const { return draws.data() + band_start[band]; }
+    const FillTriangle<Real>* const* band_draws(int band) const { return draws.data() + band_start[band]; }
     std::uint32_t band_size(int band) const { return band_start[band + 1] - band_start[band]; }
 };
 

@@ -11,25 +11,10 @@
 #include <array>
 #include <cstddef>
 
-#include "phongrast/lighting.hpp"
+#include "varyings.hpp"
 #include "view.hpp"
 
 namespace phongrast::detail {
-
-/// What is interpolated across a triangle, per vertex.
-template <typename Real>
-struct Varyings {
-    Vec3<Real> position;  ///< camera space (the eye is the origin)
-    Vec3<Real> normal;    ///< camera space, not necessarily unit after interpolation
-    Vec3<Real> color;     ///< surface colour c
-    Vec3<Real> lit;       ///< Gouraud: the lit vertex colour; flat: the triangle's colour
-};
-
-template <typename Real>
-Varyings<Real> lerp(const Varyings<Real>& a, const Varyings<Real>& b, Real t) {
-    return {a.position + (b.position - a.position) * t, a.normal + (b.normal - a.normal) * t,
-            a.color + (b.color - a.color) * t, a.lit + (b.lit - a.lit) * t};
-}
 
 template <typename Real>
 struct ClipVertex {

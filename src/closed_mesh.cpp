@@ -9,7 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
-#include "scene_analysis.hpp"
+#include "closed_mesh.hpp"
 
 namespace phongrast::detail {
 namespace {

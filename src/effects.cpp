@@ -2,7 +2,7 @@
 #include <cstring>
 #include <string>
 
-#include "scene_analysis.hpp"
+#include "effects.hpp"
 
 namespace phongrast {
 namespace detail {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "fill_kernels.hpp"
-#include "fill_types.hpp"
+#include "fill_dispatch.hpp"
 
 namespace phongrast::detail {
 

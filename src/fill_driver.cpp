@@ -5,7 +5,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include "fill_dispatch.hpp"
 #include "prefetch.hpp"
+#include "populate_pages.hpp"
 #include "resize_polling.hpp"
 #include "term_counts.hpp"
 #include "view.hpp"
@@ -48,12 +50,12 @@ bool overdraw_shades_visible_only(const Scene& scene, const RenderOptions& optio
 /// by the same kernel from the same weights, once.
 /// Returns the samples covered (pass one's count).
 template <typename Real>
-std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const DrawTriangle<Real>* const* draws,
+std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const FillTriangle<Real>* const* draws,
                                  std::uint32_t count, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
                                  VisibleLayer& layer, ProgressMonitor& progress) {
     const std::size_t samples = static_cast<std::size_t>(target.row_end - target.row_begin) *
                                 static_cast<std::size_t>(target.image.columns);
-    layer.owner.assign(samples, kNoOwner);
+    assign_populated(layer.owner, samples, kNoOwner);
     std::uint64_t covered = 0;
     for (std::uint32_t i = 0; i < count; ++i) {
         if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return covered;
@@ -69,7 +71,7 @@ std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const DrawTriangle<
         if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return covered;
         if (!layer.shown[i]) continue;  // entirely painted over: no shading at all
         target.self = i;
-        plan.kernel(*draws[i], target, vectors, plan.setup);
+        plan.kernel(*draws[i], target, vectors, plan.constants);
     }
     return covered;
 }
@@ -77,19 +79,19 @@ std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const DrawTriangle<
 /// The classic painter's fill of one band: every triangle shades every
 /// sample it covers. Returns the samples covered.
 template <typename Real>
-std::uint64_t fill_every_layer(const FillPlan<Real>& plan, const DrawTriangle<Real>* const* draws, std::uint32_t count,
+std::uint64_t fill_every_layer(const FillPlan<Real>& plan, const FillTriangle<Real>* const* draws, std::uint32_t count,
                       FillTarget<Real>& target, LightVectorsAt<Real>& vectors, ProgressMonitor& progress) {
     for (std::uint32_t i = 0; i < count; ++i) {
         if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return target.covered;
         if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
-        plan.kernel(*draws[i], target, vectors, plan.setup);
+        plan.kernel(*draws[i], target, vectors, plan.constants);
     }
     return target.covered;
 }
 
 template <typename Real>
 void prepare_memory(const FillPlan<Real>& plan, int bands, std::size_t samples, FillMemory<Real>& memory) {
-    memory.depth_buffer.assign(plan.depth_test ? samples : 0, std::numeric_limits<Real>::infinity());
+    assign_populated(memory.depth_buffer, plan.depth_test ? samples : 0, std::numeric_limits<Real>::infinity());
     memory.shaded.assign(bands, 0);
     memory.replaced.assign(bands, 0);
     memory.covered.assign(bands, 0);
@@ -105,18 +107,18 @@ template <typename Real>
 FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const EffectSet& effects,
                          const LightRig<Real>& rig, const KernelTexture* textures) {
     FillPlan<Real> plan;
-    plan.setup.textures = textures;
+    plan.constants.textures = textures;
     const std::vector<glm::vec3>& colors = scene.mesh.colors;
-    plan.setup.rig = &rig;
-    plan.setup.uniform_color = !effects.varying_colors;
-    plan.setup.color = colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[0]);
+    plan.constants.rig = &rig;
+    plan.constants.uniform_color = !effects.varying_colors;
+    plan.constants.color = colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[0]);
     KernelChoice choice;
     choice.phong = scene.shader == Shader::phong;
     choice.flat = scene.shader == Shader::flat;
     choice.perspective = perspective_weights(scene, options);
     choice.specialized = options.specialize_effects;
     choice.per_sample_vectors = options.light_vectors == LightVectors::shaded_point;
-    choice.uniform_color = plan.setup.uniform_color;
+    choice.uniform_color = plan.constants.uniform_color;
     choice.effects = effects;
     choice.textured = textures != nullptr;
     plan.kernel = pick_fill_kernel<Real>(choice);

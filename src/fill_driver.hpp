@@ -35,7 +35,7 @@ struct FillMemory {
 template <typename Real>
 struct FillPlan {
     FillKernel<Real> kernel = nullptr;
-    FillSetup<Real> setup;
+    FillConstants<Real> constants;
     bool depth_test = false;         ///< Visibility::depth_buffer
     bool shade_visible_only = false; ///< Overdraw::shade_visible in effect
     /// Every covered sample gets one and the same colour (a uniform colour,

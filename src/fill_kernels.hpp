@@ -16,7 +16,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "fill_types.hpp"
+#include "fill_dispatch.hpp"
 
 // This header is compiled once per instruction set: the library's sources see
 // the baseline kernels; fill_kernels_avx2.cpp defines these two macros and
@@ -36,7 +36,7 @@ inline namespace PHONGRAST_FILL_ISA {
 
 /// 1 / depth of each corner, for perspective-correct weights.
 template <typename Real>
-PHONGRAST_FILL_INLINE void inverse_depths(const DrawTriangle<Real>& draw, Real* inverse) {
+PHONGRAST_FILL_INLINE void inverse_depths(const FillTriangle<Real>& draw, Real* inverse) {
     for (int i = 0; i < 3; ++i) inverse[i] = Real(1) / draw.depth[i];
 }
 
@@ -66,7 +66,7 @@ inline void span_weights(const std::int64_t* e, const std::int64_t* step, Real i
 /// renormalised by their sum, whose inverse is the depth. The fill and the
 /// extra outputs' pass both use it, so their depths compare equal.
 template <typename Real, bool Perspective>
-PHONGRAST_FILL_INLINE Real sample_weights(const DrawTriangle<Real>& draw, const Real* q, const Real* dq, int k,
+PHONGRAST_FILL_INLINE Real sample_weights(const FillTriangle<Real>& draw, const Real* q, const Real* dq, int k,
                                           Real* w) {
     for (int i = 0; i < 3; ++i) w[i] = q[i] + dq[i] * static_cast<Real>(k);
     if constexpr (Perspective) {
@@ -86,7 +86,7 @@ PHONGRAST_FILL_INLINE Real sample_weights(const DrawTriangle<Real>& draw, const 
 template <typename Real, bool Perspective>
 class SpanWeights {
 public:
-    PHONGRAST_FILL_INLINE void set_up(const DrawTriangle<Real>& draw, const std::int64_t* step) {
+    PHONGRAST_FILL_INLINE void set_up(const FillTriangle<Real>& draw, const std::int64_t* step) {
         inverse_area_ = Real(1) / static_cast<Real>(draw.coverage.area2());
         if constexpr (Perspective) inverse_depths(draw, inverse_depth_);
         for (int i = 0; i < 3; ++i) {
@@ -111,7 +111,7 @@ private:
 /// span solved from the edge functions. Kept out of line, so that the tiny
 /// triangles' path keeps its values in registers.
 template <typename Real, bool Perspective, typename Visit>
-PHONGRAST_NOINLINE void for_each_weighted_row(const CoveredRows& rows, const DrawTriangle<Real>& draw,
+PHONGRAST_NOINLINE void for_each_weighted_row(const CoveredRows& rows, const FillTriangle<Real>& draw,
                                               Visit& visit) {
     SpanWeights<Real, Perspective> weights;
     bool weights_set_up = false;
@@ -135,7 +135,7 @@ PHONGRAST_NOINLINE void for_each_weighted_row(const CoveredRows& rows, const Dra
 /// bounding box holds at most 2 x 2 samples (most triangles of a large mesh)
 /// has them tested directly.
 template <typename Real, bool Perspective, typename Visit>
-PHONGRAST_FILL_INLINE void for_each_weighted_span(const DrawTriangle<Real>& draw,
+PHONGRAST_FILL_INLINE void for_each_weighted_span(const FillTriangle<Real>& draw,
                                                   const FillTarget<Real>& target, Visit&& visit) {
     const CoveredRows rows(draw.coverage, target.row_begin, target.row_end);
     if (rows.empty()) return;
@@ -174,7 +174,7 @@ PHONGRAST_FILL_INLINE glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_
 /// there. Each span starts from weights derived from exact edge values and
 /// steps them by a constant per column.
 template <typename Real, bool Perspective, typename Shade>
-PHONGRAST_FILL_INLINE void fill_samples(const DrawTriangle<Real>& draw, FillTarget<Real>& target,
+PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarget<Real>& target,
                                         Shade&& shade) {
     Image& image = target.image;
     for_each_weighted_span<Real, Perspective>(
@@ -203,14 +203,14 @@ PHONGRAST_FILL_INLINE void fill_samples(const DrawTriangle<Real>& draw, FillTarg
 }
 
 template <typename Real>
-Vec3<Real> interpolate_lit(const DrawTriangle<Real>& d, const Real* w) {
+Vec3<Real> interpolate_lit(const FillTriangle<Real>& d, const Real* w) {
     return w[0] * d.lit[0] + w[1] * d.lit[1] + w[2] * d.lit[2];
 }
 
 /// Gouraud: the colour was lit per vertex; interpolate it.
 template <typename Real, bool Perspective>
-void fill_lit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
-              const FillSetup<Real>&) {
+void fill_lit(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+              const FillConstants<Real>&) {
     fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
 }
 
@@ -218,8 +218,8 @@ void fill_lit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVec
 /// Gouraud would give weights summing to 1 only up to rounding, so the colour
 /// would wander by an ulp across the triangle.)
 template <typename Real, bool Perspective>
-void fill_flat(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
-               const FillSetup<Real>&) {
+void fill_flat(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+               const FillConstants<Real>&) {
     fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
 }
 
@@ -229,7 +229,7 @@ void fill_flat(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVe
 /// Gathering across a triangle's rows keeps batches full for small triangles,
 /// whose spans are only a few samples long.
 template <typename Real, bool Perspective, typename ShadeBatch>
-void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& target, ShadeBatch&& shade_batch) {
+void fill_sample_batches(const FillTriangle<Real>& draw, FillTarget<Real>& target, ShadeBatch&& shade_batch) {
     Image& image = target.image;
     Lanes<Real> w[3], depth, out[3];
     std::size_t index[kSampleBatch];
@@ -290,7 +290,7 @@ void fill_sample_batches(const DrawTriangle<Real>& draw, FillTarget<Real>& targe
 /// same order as one sample at a time: (w0 a + w1 b) + w2 c for each
 /// attribute, T[c] * A[c] + S[c].
 template <typename Real>
-PHONGRAST_FILL_INLINE void shade_lit_textured_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w,
+PHONGRAST_FILL_INLINE void shade_lit_textured_lanes(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w,
                                                     const KernelTexture& texture, Lanes<Real>* out) {
     Lanes<Real> s, t, specular[3];
     interpolate_lanes(n, w, draw.v[0]->lit[0], draw.v[1]->lit[0], draw.v[2]->lit[0], s);
@@ -314,9 +314,9 @@ PHONGRAST_FILL_INLINE void shade_lit_textured_lanes(const DrawTriangle<Real>& dr
 /// fill_samples() computes). A face without a texture carries its whole lit
 /// colour in lit[i] and is filled as fill_lit() fills it.
 template <typename Real, bool Perspective>
-void fill_lit_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
-                       const FillSetup<Real>& setup) {
-    const KernelTexture& texture = setup.textures[draw.surface];
+void fill_lit_textured(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+                       const FillConstants<Real>& constants) {
+    const KernelTexture& texture = constants.textures[draw.surface];
     if (texture.texels == nullptr) {
         fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
         return;
@@ -332,9 +332,9 @@ void fill_lit_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target,
 /// per lane T[c] * A[c] + S[c], as one sample at a time. A face without a
 /// texture writes its one colour as fill_flat() does (set-up put it in lit[0]).
 template <typename Real, bool Perspective>
-void fill_flat_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
-                        const FillSetup<Real>& setup) {
-    const KernelTexture& texture = setup.textures[draw.surface];
+void fill_flat_textured(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+                        const FillConstants<Real>& constants) {
+    const KernelTexture& texture = constants.textures[draw.surface];
     if (texture.texels == nullptr) {
         fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
         return;
@@ -354,14 +354,14 @@ void fill_flat_textured(const DrawTriangle<Real>& draw, FillTarget<Real>& target
 /// Phong compiled for one effect set. Without diffuse or specular it interpolates no normal.
 template <typename Real, bool Perspective, bool Ambient, bool Diffuse, bool Specular, bool PerSampleVectors,
           bool UniformColor>
-void fill_phong(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
-                const FillSetup<Real>& setup) {
+void fill_phong(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
+                const FillConstants<Real>& constants) {
     constexpr bool kNormals = Diffuse || Specular;
-    const LightRig<Real>& rig = setup.rig_of(draw);
+    const LightRig<Real>& rig = constants.rig_of(draw);
     if constexpr (kNormals && !PerSampleVectors) vectors.compute(rig.active_lights, draw.centroid(), Specular, rig.eye_at_infinity);
     const FixedTerms<Ambient, Diffuse, Specular> terms;
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
-        shade_phong_samples<Real, PerSampleVectors, UniformColor>(draw, n, w, terms, rig.active_lights, vectors, setup,
+        shade_phong_samples<Real, PerSampleVectors, UniformColor>(draw, n, w, terms, rig.active_lights, vectors, constants,
                                                                 out);
     });
 }
@@ -373,14 +373,14 @@ void fill_phong(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightV
 /// operations in the same order (0 + factor * colour, colour interpolated as
 /// (w0 a + w1 b) + w2 c), so the image is the general kernel's bit for bit.
 template <typename Real, bool Perspective, bool Ambient, bool UniformColor>
-void fill_phong_unlit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
-                      const FillSetup<Real>& setup) {
-    const Vec3<Real> factor = setup.rig_of(draw).ambient_factor;
+void fill_phong_unlit(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+                      const FillConstants<Real>& constants) {
+    const Vec3<Real> factor = constants.rig_of(draw).ambient_factor;
     fill_samples<Real, Perspective>(draw, target, [&](const Real* w) {
         Vec3<Real> out(Real(0));
         if constexpr (Ambient) {
             for (int c = 0; c < 3; ++c) {
-                const Real color = UniformColor ? setup.color[c]
+                const Real color = UniformColor ? constants.color[c]
                                                 : (w[0] * draw.v[0]->color[c] + w[1] * draw.v[1]->color[c]) +
                                                       w[2] * draw.v[2]->color[c];
                 out[c] += factor[c] * color;
@@ -393,17 +393,17 @@ void fill_phong_unlit(const DrawTriangle<Real>& draw, FillTarget<Real>& target, 
 /// Phong as a straightforward implementation writes it: every term checked per batch, every light.
 /// Textured: the same with c multiplied by T(s, t) at each sample (the kernel of textured scenes).
 template <typename Real, bool Perspective, bool PerSampleVectors, bool Textured = false>
-void fill_phong_general(const DrawTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
-                        const FillSetup<Real>& setup) {
-    const LightRig<Real>& rig = setup.rig_of(draw);
+void fill_phong_general(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
+                        const FillConstants<Real>& constants) {
+    const LightRig<Real>& rig = constants.rig_of(draw);
     if (!PerSampleVectors) vectors.compute(rig.lights, draw.centroid(), true, rig.eye_at_infinity);
     std::conditional_t<Textured, SelectedTexturedTerms, SelectedTerms> terms;
     terms.lighting = rig.lighting;
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
-        if (setup.uniform_color) {
-            shade_phong_samples<Real, PerSampleVectors, true>(draw, n, w, terms, rig.lights, vectors, setup, out);
+        if (constants.uniform_color) {
+            shade_phong_samples<Real, PerSampleVectors, true>(draw, n, w, terms, rig.lights, vectors, constants, out);
         } else {
-            shade_phong_samples<Real, PerSampleVectors, false>(draw, n, w, terms, rig.lights, vectors, setup, out);
+            shade_phong_samples<Real, PerSampleVectors, false>(draw, n, w, terms, rig.lights, vectors, constants, out);
         }
     });
 }

@@ -16,7 +16,7 @@
 #include <limits>
 #include <vector>
 
-#include "fill_types.hpp"
+#include "fill_dispatch.hpp"
 
 #define PHONGRAST_FILL_ISA avx2
 #define PHONGRAST_FILL_VECTOR_BYTES 32

@@ -257,7 +257,7 @@ PHONGRAST_FILL_INLINE void texel_lanes(const KernelTexture& texture, int n, cons
 /// Multiplies each lane's colour by T at its (s, t), which Phong's textured
 /// faces carry in their vertices' `lit` (interpolated like every attribute).
 template <typename Real>
-inline void texture_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const KernelTexture& texture,
+inline void texture_lanes(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w, const KernelTexture& texture,
                           Lanes<Real>* color) {
     if (texture.texels == nullptr) return;  // no texture, or an unreadable one: T = 1
     Lanes<Real> s, t, texel[3];
@@ -271,12 +271,12 @@ inline void texture_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Rea
 
 /// The surface colour of each lane into `color` (times T on textured faces), and out = its ambient term.
 template <typename Real, bool UniformColor, typename Terms>
-PHONGRAST_FILL_INLINE void shade_ambient_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w,
-                                               const Terms& terms, const FillSetup<Real>& setup,
+PHONGRAST_FILL_INLINE void shade_ambient_lanes(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w,
+                                               const Terms& terms, const FillConstants<Real>& constants,
                                                Lanes<Real>* color, Lanes<Real>* out) {
     const auto interpolate_color = [&](int c) {
         if (UniformColor) {
-            for (int l = 0; l < n; ++l) color[c][l] = setup.color[c];
+            for (int l = 0; l < n; ++l) color[c][l] = constants.color[c];
         } else {
             interpolate_lanes(n, w, draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], color[c]);
         }
@@ -284,13 +284,13 @@ PHONGRAST_FILL_INLINE void shade_ambient_lanes(const DrawTriangle<Real>& draw, i
     const auto ambient = [&](int c) {
         for (int l = 0; l < n; ++l) out[c][l] = Real(0);
         if (terms.ambient()) {
-            const Real factor = setup.rig_of(draw).ambient_factor[c];
+            const Real factor = constants.rig_of(draw).ambient_factor[c];
             for (int l = 0; l < n; ++l) out[c][l] += factor * color[c][l];
         }
     };
     if constexpr (Terms::textured()) {
         for (int c = 0; c < 3; ++c) interpolate_color(c);
-        texture_lanes(draw, n, w, setup.textures[draw.surface], color);
+        texture_lanes(draw, n, w, constants.textures[draw.surface], color);
         for (int c = 0; c < 3; ++c) ambient(c);
     } else {
         for (int c = 0; c < 3; ++c) {
@@ -303,7 +303,7 @@ PHONGRAST_FILL_INLINE void shade_ambient_lanes(const DrawTriangle<Real>& draw, i
 /// The unit normal of each lane, its camera-space point (per-sample vectors)
 /// and, for specular, the unit vector to the eye.
 template <typename Real, bool PerSampleVectors, typename Terms>
-PHONGRAST_FILL_INLINE void surface_lanes(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w,
+PHONGRAST_FILL_INLINE void surface_lanes(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w,
                                          const Terms& terms, const LightVectorsAt<Real>& vectors,
                                          bool eye_at_infinity, Lanes<Real>* normal, Lanes<Real>* point,
                                          Lanes<Real>* eye) {
@@ -393,18 +393,18 @@ PHONGRAST_FILL_INLINE void add_light_lanes(int n, std::size_t k, const Terms& te
 
 /// Shades the n samples whose weights are w into out (three channels).
 template <typename Real, bool PerSampleVectors, bool UniformColor, int FixedCount, typename Terms>
-void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
+void shade_phong_batch(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
                        const std::vector<CameraLight<Real>>& lights, const LightVectorsAt<Real>& vectors,
-                       const FillSetup<Real>& setup, Lanes<Real>* out) {
+                       const FillConstants<Real>& constants, Lanes<Real>* out) {
     if constexpr (FixedCount > 0) n = FixedCount;  // a constant trip count: straight scalar code
     Lanes<Real> color[3];
-    shade_ambient_lanes<Real, UniformColor>(draw, n, w, terms, setup, color, out);
+    shade_ambient_lanes<Real, UniformColor>(draw, n, w, terms, constants, color, out);
     if (!(terms.diffuse() || terms.specular()) || lights.empty()) return;
     Lanes<Real> normal[3], point[3], eye[3] = {};
-    surface_lanes<Real, PerSampleVectors>(draw, n, w, terms, vectors, setup.rig_of(draw).eye_at_infinity, normal,
+    surface_lanes<Real, PerSampleVectors>(draw, n, w, terms, vectors, constants.rig_of(draw).eye_at_infinity, normal,
                                           point, eye);
     for (std::size_t k = 0; k < lights.size(); ++k) {
-        add_light_lanes<Real, PerSampleVectors>(n, k, terms, lights, vectors, setup.rig_of(draw), normal, point, eye, color,
+        add_light_lanes<Real, PerSampleVectors>(n, k, terms, lights, vectors, constants.rig_of(draw), normal, point, eye, color,
                                                 out);
     }
 }
@@ -414,18 +414,18 @@ void shade_phong_batch(const DrawTriangle<Real>& draw, int n, const Lanes<Real>*
 /// instantiation, whose loops compile to plain scalar code: the vector loops'
 /// set-up would cost more than the work. Same operations either way.
 template <typename Real, bool PerSampleVectors, bool UniformColor, typename Terms>
-void shade_phong_samples(const DrawTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
+void shade_phong_samples(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
                          const std::vector<CameraLight<Real>>& lights, const LightVectorsAt<Real>& vectors,
-                         const FillSetup<Real>& setup, Lanes<Real>* out) {
+                         const FillConstants<Real>& constants, Lanes<Real>* out) {
     constexpr int kVectorWidth = PHONGRAST_FILL_VECTOR_BYTES / sizeof(Real);
     if (n >= kVectorWidth) {
-        shade_phong_batch<Real, PerSampleVectors, UniformColor, 0>(draw, n, w, terms, lights, vectors, setup, out);
+        shade_phong_batch<Real, PerSampleVectors, UniformColor, 0>(draw, n, w, terms, lights, vectors, constants, out);
         return;
     }
     for (int l = 0; l < n; ++l) {
         Lanes<Real> one_w[3], one_out[3];
         for (int i = 0; i < 3; ++i) one_w[i][0] = w[i][l];
-        shade_phong_batch<Real, PerSampleVectors, UniformColor, 1>(draw, 1, one_w, terms, lights, vectors, setup,
+        shade_phong_batch<Real, PerSampleVectors, UniformColor, 1>(draw, 1, one_w, terms, lights, vectors, constants,
                                                                    one_out);
         for (int c = 0; c < 3; ++c) out[c][l] = one_out[c][0];
     }

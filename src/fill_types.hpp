@@ -1,24 +1,22 @@
 // What the fill kernels and the pipeline share (internal header): the set-up
-// triangle, the rows a task fills, the per-render constants, the kernel
-// signature and what chooses a kernel.
+// triangle, the rows a task fills, the per-render constants and the kernel
+// signature. What chooses a kernel is in fill_dispatch.hpp.
 //
 // Kept apart from fill_kernels.hpp, which is compiled once per instruction
-// set (see fill_kernels_avx2.cpp): these types and functions are compiled
-// for the baseline instruction set only, and every kernel, whatever its
-// instruction set, takes them.
+// set (see fill_kernels_avx2.cpp): every kernel, whatever its instruction
+// set, takes these types.
 #ifndef PHONGRAST_SRC_FILL_TYPES_HPP
 #define PHONGRAST_SRC_FILL_TYPES_HPP
 
 #include <algorithm>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
-#include "clipping.hpp"
 #include "phongrast/image.hpp"
 #include "phongrast/texture.hpp"
 #include "raster.hpp"
 #include "shading.hpp"
+#include "varyings.hpp"
 
 namespace phongrast::detail {
 
@@ -35,11 +33,11 @@ constexpr int kBandRows = 16;
 /// padding: the material index took the last 4). To keep it there, the coverage stores no area (the fill
 /// recomputes it exactly) and Phong's centroid shares the lit colours' place.
 template <typename Real>
-struct DrawTriangle {
+struct FillTriangle {
     SnappedTriangle coverage;
     Real depth[3];                ///< z_c of the corners
     std::uint32_t source;         ///< index of the mesh triangle it comes from (the id output)
-    /// Its material: an index into FillSetup::rig (0 in a scene of one
+    /// Its material: an index into FillConstants::rig (0 in a scene of one
     /// material). It fills what was padding: the size does not change.
     std::uint32_t surface;
     /// Gouraud: the lit corner colours; flat: the triangle's colour, thrice;
@@ -52,8 +50,8 @@ struct DrawTriangle {
     const Vec3<Real>& centroid() const { return lit[0]; }
     void set_centroid(const Vec3<Real>& centroid) { lit[0] = centroid; }
 };
-static_assert(sizeof(void*) != 8 || sizeof(DrawTriangle<float>) <= 120,
-              "DrawTriangle is most of the memory per triangle on large meshes: keep it at 120 bytes");
+static_assert(sizeof(void*) != 8 || sizeof(FillTriangle<float>) <= 120,
+              "FillTriangle is most of the memory per triangle on large meshes: keep it at 120 bytes");
 
 /// The rows of the image (in samples) one task fills, and what it counts.
 template <typename Real>
@@ -81,7 +79,7 @@ constexpr std::uint32_t kNoOwner = 0xffffffffu;
 /// triangles have gone through in painter's order each sample names the one
 /// that paints it last. Returns the number of samples covered.
 template <typename Real>
-std::uint64_t record_owner(const DrawTriangle<Real>& draw, const FillTarget<Real>& target, std::uint32_t number,
+std::uint64_t record_owner(const FillTriangle<Real>& draw, const FillTarget<Real>& target, std::uint32_t number,
                            std::uint32_t* owner) {
     std::uint64_t covered = 0;
     const std::size_t columns = static_cast<std::size_t>(target.image.columns);
@@ -112,53 +110,21 @@ struct KernelTexture {
 
 /// Per-render constants the kernels read.
 template <typename Real>
-struct FillSetup {
-    /// One rig per material of the scene (one for a version-1 scene), indexed by DrawTriangle::surface.
+struct FillConstants {
+    /// One rig per material of the scene (one for a version-1 scene), indexed by FillTriangle::surface.
     const LightRig<Real>* rig = nullptr;
     bool uniform_color = true;
     Vec3<Real> color{Real(1)};  ///< the colour of every vertex when uniform_color
     /// Textured scenes only (the textured kernels): per material, indexed by
-    /// DrawTriangle::surface; (s, t) are in each vertex's `lit`.
+    /// FillTriangle::surface; (s, t) are in each vertex's `lit`.
     const KernelTexture* textures = nullptr;
 
-    const LightRig<Real>& rig_of(const DrawTriangle<Real>& draw) const { return rig[draw.surface]; }
+    const LightRig<Real>& rig_of(const FillTriangle<Real>& draw) const { return rig[draw.surface]; }
 };
 
 template <typename Real>
-using FillKernel = void (*)(const DrawTriangle<Real>&, FillTarget<Real>&, LightVectorsAt<Real>&,
-                            const FillSetup<Real>&);
-
-/// What decides the kernel.
-struct KernelChoice {
-    bool phong = false;
-    bool flat = false;
-    bool perspective = true;
-    bool specialized = true;
-    bool per_sample_vectors = true;
-    bool uniform_color = true;
-    bool textured = false;  ///< some material has a texture: the textured kernels
-    EffectSet effects;
-};
-
-/// The kernel for `choice` compiled for the best instruction set this build
-/// and this CPU have (kernel_isa()). Every instruction set computes the same
-/// image bit for bit: the same IEEE operations in the same order, no fused
-/// multiply-add.
-template <typename Real>
-FillKernel<Real> pick_fill_kernel(const KernelChoice& choice);
-
-enum class KernelIsa {
-    baseline,  ///< the build's target (x86-64: SSE2, 4 floats per instruction)
-    avx2,      ///< AVX2: 8 floats per instruction (x86-64 GCC builds, on CPUs that have it)
-};
-/// What pick_fill_kernel() uses now.
-KernelIsa kernel_isa();
-const char* to_string(KernelIsa isa);
-/// For tests that compare instruction sets: use `isa` from now on (it must
-/// be one kernel_isa_available() accepts), or the best one again with nullopt.
-void override_kernel_isa(std::optional<KernelIsa> isa);
-/// Whether this build has kernels for `isa` and this CPU can run them.
-bool kernel_isa_available(KernelIsa isa);
+using FillKernel = void (*)(const FillTriangle<Real>&, FillTarget<Real>&, LightVectorsAt<Real>&,
+                            const FillConstants<Real>&);
 
 }  // namespace phongrast::detail
 

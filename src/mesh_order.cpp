@@ -10,7 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "resize_polling.hpp"
-#include "scene_analysis.hpp"
+#include "effects.hpp"
 
 namespace phongrast::detail {
 namespace {

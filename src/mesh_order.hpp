@@ -31,7 +31,7 @@
 #include <functional>
 #include <vector>
 
-#include "normals_scratch.hpp"
+#include "normals.hpp"
 #include "phongrast/render.hpp"
 
 namespace phongrast::detail {

@@ -11,7 +11,7 @@
 
 #include "api_checks.hpp"
 #include "finite.hpp"
-#include "normals_scratch.hpp"
+#include "normals.hpp"
 #include "phongrast/lighting.hpp"
 #include "phongrast/mesh.hpp"
 #include "resize_polling.hpp"

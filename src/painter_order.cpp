@@ -5,6 +5,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "populate_pages.hpp"
+
 namespace phongrast::detail {
 namespace {
 
@@ -88,7 +90,7 @@ void order_ties(PaintRecord* data, std::size_t n, const TieRank& tie_rank) {
 
 /// Set-up's records, chunk after chunk, in mesh order.
 struct SetupRecords {
-    const std::vector<std::vector<DrawnTriangle>>& chunk_drawn;
+    const std::vector<std::vector<DrawSpan>>& chunk_drawn;
     const std::vector<std::vector<std::uint64_t>>& chunk_keys;
     std::size_t chunks;
 
@@ -112,6 +114,7 @@ void keep_mesh_order(const SetupRecords& records, PainterOrderMemory& memory) {
     for (std::size_t chunk = 0; chunk < records.chunks; ++chunk) {
         offsets[chunk + 1] = offsets[chunk] + records.chunk_drawn[chunk].size();
     }
+    reserve_populated(memory.sorted, offsets[records.chunks]);
     memory.sorted.resize(offsets[records.chunks]);
     tbb::parallel_for(std::size_t(0), records.chunks, [&](std::size_t chunk) {
         PaintRecord* out = memory.sorted.data() + offsets[chunk];
@@ -128,7 +131,7 @@ Digit leading_digit(const SetupRecords& records, PainterOrderMemory& memory, Pro
     memory.group_min.assign(groups, std::numeric_limits<std::uint64_t>::max());
     memory.group_max.assign(groups, 0);
     tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
-        records.for_each_in_group(group, [&](std::uint64_t key, const DrawnTriangle&) {
+        records.for_each_in_group(group, [&](std::uint64_t key, const DrawSpan&) {
             memory.group_min[group] = std::min(memory.group_min[group], key);
             memory.group_max[group] = std::max(memory.group_max[group], key);
         });
@@ -149,7 +152,7 @@ void scatter_by_digit(const SetupRecords& records, const Digit& digit, PainterOr
     tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
         Counts& counts = memory.group_counts[group];
         counts.fill(0);
-        records.for_each_in_group(group, [&](std::uint64_t key, const DrawnTriangle&) { ++counts[digit(key)]; });
+        records.for_each_in_group(group, [&](std::uint64_t key, const DrawSpan&) { ++counts[digit(key)]; });
     });
     std::vector<std::size_t>& bucket_start = memory.chunk_offsets;
     bucket_start.assign(kBuckets + 1, 0);
@@ -163,10 +166,11 @@ void scatter_by_digit(const SetupRecords& records, const Digit& digit, PainterOr
         }
     }
     bucket_start[kBuckets] = total;
+    reserve_populated(memory.sorted, total);
     memory.sorted.resize(total);
     tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
         Counts& cursor = memory.group_counts[group];
-        records.for_each_in_group(group, [&](std::uint64_t key, const DrawnTriangle& drawn) {
+        records.for_each_in_group(group, [&](std::uint64_t key, const DrawSpan& drawn) {
             memory.sorted[cursor[digit(key)]++] = {key, drawn};
         });
         progress.piece_done();
@@ -204,7 +208,7 @@ void sort_buckets(const Digit& digit, PainterOrderMemory& memory, ProgressMonito
 
 }  // namespace
 
-void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
+void painter_order(const std::vector<std::vector<DrawSpan>>& chunk_drawn,
                    const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
                    PainterOrderMemory& memory, ProgressMonitor& progress, const TieRank& tie_rank) {
     const SetupRecords records{chunk_drawn, chunk_keys, chunks};
@@ -223,10 +227,10 @@ void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
 std::vector<std::uint32_t> farthest_first_order(const std::vector<double>& depth) {
     constexpr std::size_t kChunk = 4096;  // as set-up's chunks, so that ties cross chunks and groups
     const std::size_t chunks = (depth.size() + kChunk - 1) / kChunk;
-    std::vector<std::vector<DrawnTriangle>> chunk_drawn(chunks);
+    std::vector<std::vector<DrawSpan>> chunk_drawn(chunks);
     std::vector<std::vector<std::uint64_t>> chunk_keys(chunks);
     for (std::size_t i = 0; i < depth.size(); ++i) {
-        chunk_drawn[i / kChunk].push_back(DrawnTriangle::one(i / kChunk, i % kChunk, 0, 0));
+        chunk_drawn[i / kChunk].push_back(DrawSpan::one(i / kChunk, i % kChunk, 0, 0));
         chunk_keys[i / kChunk].push_back(farthest_first_key(depth[i]));
     }
     PainterOrderMemory memory;

@@ -20,9 +20,9 @@
 #include <functional>
 #include <vector>
 
+#include "draw_span.hpp"
 #include "phongrast/mesh.hpp"
 #include "progress_monitor.hpp"
-#include "triangle_setup.hpp"
 #include "vertex_stage.hpp"
 
 namespace phongrast::detail {
@@ -47,7 +47,7 @@ inline std::uint64_t painter_key(const Triangle& triangle, const std::vector<Scr
 /// A drawn triangle and its key: what the sort moves.
 struct PaintRecord {
     std::uint64_t key;
-    DrawnTriangle drawn;
+    DrawSpan drawn;
 };
 
 namespace painter_sort {
@@ -68,7 +68,7 @@ struct PainterOrderMemory {
 
 /// A drawn triangle's place among triangles of equal depth: its index in
 /// the caller's mesh when the pipeline renders it reordered (mesh_order.hpp).
-using TieRank = std::function<std::uint32_t(const DrawnTriangle&)>;
+using TieRank = std::function<std::uint32_t(const DrawSpan&)>;
 
 /// Puts the drawn triangles of the first `chunks` set-up chunks into
 /// memory.sorted in painter's order: farthest mean z_c first, equal depths
@@ -77,7 +77,7 @@ using TieRank = std::function<std::uint32_t(const DrawnTriangle&)>;
 /// leaving them out changes no draw's place relative to another's. With
 /// `sort` false (the order cannot change the picture) they stay in mesh
 /// order. Reports progress through `progress`.
-void painter_order(const std::vector<std::vector<DrawnTriangle>>& chunk_drawn,
+void painter_order(const std::vector<std::vector<DrawSpan>>& chunk_drawn,
                    const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
                    PainterOrderMemory& memory, ProgressMonitor& progress, const TieRank& tie_rank = nullptr);
 

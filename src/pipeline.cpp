@@ -4,7 +4,7 @@
 #include "pipeline.hpp"
 
 #include "back_faces.hpp"
-#include "scene_analysis.hpp"
+#include "effects.hpp"
 #include "term_counts.hpp"
 #include "view.hpp"
 
@@ -138,7 +138,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                  memory.vertices,
                                  cull,
                                  point_shader,
-                                 fill_plan.setup,
+                                 fill_plan.constants,
                                  several ? assembled->triangle_surfaces.data() : nullptr,
                                  several ? memory.surface_shaders.data() : nullptr,
                                  parts.textures,
@@ -149,7 +149,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     const bool sort = !fill_plan.order_free || out.aov_planes.any();  // depth and id name the last triangle
     // Mesh order hook: a reordered mesh's equal depths are drawn in the caller's triangle order.
     const std::uint32_t* original = out.original_triangle;
-    const TieRank tie_rank = original == nullptr ? TieRank() : TieRank([&](const DrawnTriangle& drawn) {
+    const TieRank tie_rank = original == nullptr ? TieRank() : TieRank([&](const DrawSpan& drawn) {
         return original[memory.draws.chunk_draws[drawn.chunk()][drawn.first()].source];
     });
     painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, sort, memory.painter,

@@ -7,6 +7,8 @@
 #include <functional>
 #include <vector>
 
+#include "populate_pages.hpp"
+
 namespace phongrast::detail {
 
 /// values.resize(size), but growing in steps of about 4 MiB with `poll()`
@@ -15,7 +17,8 @@ namespace phongrast::detail {
 /// a fresh Renderer, a 2048² supersampled image is 50 MB of new zeroed
 /// pages, which took 0.3-0.5 s under load with no progress report in
 /// between (so Ctrl-C in Python waited that long). The contents end up the
-/// same as one resize's; shrinking is one resize.
+/// same as one resize's; shrinking is one resize. Each step's new pages are
+/// mapped in one call first (populate_pages.hpp).
 template <typename T>
 void resize_polling(std::vector<T>& values, std::size_t size, const std::function<void()>& poll) {
     if (size <= values.size()) {
@@ -26,7 +29,9 @@ void resize_polling(std::vector<T>& values, std::size_t size, const std::functio
     constexpr std::size_t kStepBytes = std::size_t(4) << 20;
     const std::size_t step = std::max<std::size_t>(1, kStepBytes / sizeof(T));
     while (values.size() < size) {
-        values.resize(std::min(size, values.size() + step));
+        const std::size_t next = std::min(size, values.size() + step);
+        populate_for_writing(values.data() + values.size(), (next - values.size()) * sizeof(T));
+        values.resize(next);
         if (poll) poll();
     }
 }
@@ -45,7 +50,9 @@ void assign_polling(std::vector<T>& values, std::size_t size, const T& value, co
     constexpr std::size_t kStepBytes = std::size_t(4) << 20;
     const std::size_t step = std::max<std::size_t>(1, kStepBytes / sizeof(T));
     while (values.size() < size) {
-        values.resize(std::min(size, values.size() + step), value);
+        const std::size_t next = std::min(size, values.size() + step);
+        populate_for_writing(values.data() + values.size(), (next - values.size()) * sizeof(T));
+        values.resize(next, value);
         if (poll) poll();
     }
 }

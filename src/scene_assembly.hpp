@@ -15,7 +15,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
-#include "normals_scratch.hpp"
+#include "normals.hpp"
 #include "phongrast/render.hpp"
 
 namespace phongrast::detail {

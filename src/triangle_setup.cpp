@@ -8,6 +8,7 @@
 #include "back_faces.hpp"
 #include "clipping.hpp"
 #include "painter_order.hpp"
+#include "populate_pages.hpp"
 #include "raster.hpp"
 #include "term_counts.hpp"
 
@@ -15,11 +16,11 @@ namespace phongrast::detail {
 namespace {
 
 // A clipped triangle is a fan of at most 6 pieces (ClipPolygon holds 8 corners).
-static_assert(kSetupChunk * 6 < (std::size_t(1) << DrawnTriangle::kFirstBits), "a chunk's draws must fit DrawnTriangle");
+static_assert(kSetupChunk * 6 < (std::size_t(1) << DrawSpan::kFirstBits), "a chunk's draws must fit DrawSpan");
 static_assert(std::tuple_size<decltype(ClipPolygon<float>::vertices)>::value == 8, "at most 6 pieces per triangle");
 
 /// One corner of a piece to draw: where it is (sample coordinates, z_c) and
-/// the varyings the draw triangle will point to.
+/// the varyings the fill triangle will point to.
 template <typename Real>
 struct Corner {
     double column, row, depth;
@@ -36,7 +37,7 @@ struct PiecesOutcome {
 template <typename Real>
 class TriangleSetup {
 public:
-    TriangleSetup(const SetupInput<Real>& input, std::vector<DrawTriangle<Real>>& out,
+    TriangleSetup(const SetupInput<Real>& input, std::vector<FillTriangle<Real>>& out,
                   ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors)
         : in_(input), vertices_(input.vertices), out_(out), clip_vertices_(clip_vertices), counts_(counts),
           vectors_(vectors), same_lit_(same_lit_everywhere()),
@@ -129,7 +130,7 @@ private:
 
     /// Snaps three corners and sets up their coverage into `draw`; false when
     /// they cover no sample. `order[i]` is the corner that became draw corner i.
-    bool set_up_piece(const Corner<Real> (&corner)[3], const Vec3<Real>& centroid, DrawTriangle<Real>& draw,
+    bool set_up_piece(const Corner<Real> (&corner)[3], const Vec3<Real>& centroid, FillTriangle<Real>& draw,
                       PiecesOutcome& outcome, int (&order)[3]) const {
         const SnappedPoint a = snap(corner[0].column, corner[0].row);
         const SnappedPoint b = snap(corner[1].column, corner[1].row);
@@ -166,7 +167,7 @@ private:
             corner[i] = {s.column, s.row, s.depth, &vertices_.varyings[tri[i]]};
         }
         PiecesOutcome outcome;
-        DrawTriangle<Real> draw;
+        FillTriangle<Real> draw;
         int order[3];
         if (!set_up_piece(corner, centroid, draw, outcome, order)) return outcome;
         if (in_parts_) {
@@ -246,7 +247,7 @@ private:
                 corner[i] = {v.column, v.row, v.depth, &v.varyings};
             }
             const bool first = !outcome.drawn;
-            DrawTriangle<Real> draw;
+            FillTriangle<Real> draw;
             int order[3];
             if (!set_up_piece(corner, centroid, draw, outcome, order)) continue;
             if (first) {
@@ -269,7 +270,7 @@ private:
     bool textured_face() const { return in_.textures[surface_].texels != nullptr; }
 
     void set_up_whole_in_parts(const Triangle& tri, const Vec3<Real>& centroid, const int (&order)[3],
-                               DrawTriangle<Real>& draw) {
+                               FillTriangle<Real>& draw) {
         if (in_.options.light_vectors != LightVectors::triangle_centroid) {
             // Exact vectors: each vertex was lit once (light_vertices_in_parts), S already in its `color`.
             for (int i = 0; i < 3; ++i) draw.lit[i] = in_.vertex_colour_parts[tri[order[i]]];
@@ -343,8 +344,8 @@ private:
     std::optional<Vec3<Real>> same_lit_everywhere() const {
         // One colour per material, or A and S apart on textured faces: lit per triangle.
         if (in_.triangle_surfaces != nullptr || in_.textures != nullptr) return std::nullopt;
-        if (!in_.shader.specialized || in_.shader.effects.normals || !in_.fill.uniform_color) return std::nullopt;
-        return in_.shader.shade_prepared(vectors_, Vec3<Real>(Real(0)), in_.fill.color);
+        if (!in_.shader.specialized || in_.shader.effects.normals || !in_.fill_constants.uniform_color) return std::nullopt;
+        return in_.shader.shade_prepared(vectors_, Vec3<Real>(Real(0)), in_.fill_constants.color);
     }
 
     // Flat: one colour per triangle, lit at the centroid with the mean vertex
@@ -355,7 +356,7 @@ private:
             normal += vertices_.varyings[index].normal;
             color += vertices_.varyings[index].color;
         }
-        const Vec3<Real> surface = in_.fill.uniform_color ? in_.fill.color : color / Real(3);
+        const Vec3<Real> surface = in_.fill_constants.uniform_color ? in_.fill_constants.color : color / Real(3);
         return lighting(vectors_, centroid, safe_normalize<Real>(normal), surface);
     }
 
@@ -382,7 +383,7 @@ private:
     std::uint32_t surface_ = 0; ///< its material (index into SetupInput::surface_shaders)
     const SetupInput<Real>& in_;
     const TransformedVertices<Real>& vertices_;
-    std::vector<DrawTriangle<Real>>& out_;
+    std::vector<FillTriangle<Real>>& out_;
     ClipVertexStore<Real>& clip_vertices_;
     SetupCounts& counts_;
     LightVectorsAt<Real>& vectors_;
@@ -394,13 +395,13 @@ private:
 
 /// Records where the draws of the triangle just set up are, and its painter's-order key.
 template <typename Real>
-void record_drawn(const std::vector<DrawTriangle<Real>>& out, std::size_t first, std::size_t chunk,
-                  std::uint64_t key, std::vector<DrawnTriangle>& drawn, std::vector<std::uint64_t>& keys) {
+void record_drawn(const std::vector<FillTriangle<Real>>& out, std::size_t first, std::size_t chunk,
+                  std::uint64_t key, std::vector<DrawSpan>& drawn, std::vector<std::uint64_t>& keys) {
     const std::size_t count = out.size() - first;
     // Bands fit 16 bits: images are at most kMaxSampleSide = 2^19 samples high.
-    drawn.push_back(count == 1 ? DrawnTriangle::one(chunk, first, out[first].coverage.row_min / kBandRows,
+    drawn.push_back(count == 1 ? DrawSpan::one(chunk, first, out[first].coverage.row_min / kBandRows,
                                                     out[first].coverage.row_max / kBandRows)
-                               : DrawnTriangle::several(chunk, first, static_cast<int>(count)));
+                               : DrawSpan::several(chunk, first, static_cast<int>(count)));
     keys.push_back(key);
 }
 
@@ -418,7 +419,7 @@ void add_counts(const SetupCounts& counts, RenderStats& stats) {
 }  // namespace
 
 template <typename Real>
-void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::vector<DrawTriangle<Real>>& out,
+void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::vector<FillTriangle<Real>>& out,
                      ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors) {
     TriangleSetup<Real>(input, out, clip_vertices, counts, vectors).run(source);
 }
@@ -441,15 +442,15 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
         if (progress.cancelled()) return;
         const std::size_t begin = chunk * kSetupChunk;
         const std::size_t end = std::min(triangles.size(), begin + kSetupChunk);
-        std::vector<DrawTriangle<Real>>& out = draws.chunk_draws[chunk];
-        std::vector<DrawnTriangle>& drawn = draws.chunk_drawn[chunk];
+        std::vector<FillTriangle<Real>>& out = draws.chunk_draws[chunk];
+        std::vector<DrawSpan>& drawn = draws.chunk_drawn[chunk];
         std::vector<std::uint64_t>& keys = draws.chunk_keys[chunk];
         out.clear();
-        out.reserve(end - begin);
+        reserve_populated(out, end - begin);
         drawn.clear();
-        drawn.reserve(end - begin);
+        reserve_populated(drawn, end - begin);
         keys.clear();
-        keys.reserve(end - begin);
+        reserve_populated(keys, end - begin);
         draws.chunk_clip_vertices[chunk].clear();
         TriangleSetup<Real> setup(input, out, draws.chunk_clip_vertices[chunk], draws.chunk_counts[chunk],
                                   draws.chunk_vectors[chunk]);
@@ -472,7 +473,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
 #define PHONGRAST_INSTANTIATE_SETUP(Real)                                                                       \
     template void set_up_triangles<Real>(const SetupInput<Real>&, DrawList<Real>&, RenderStats&,                \
                                          ProgressMonitor&);                                                     \
-    template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, std::vector<DrawTriangle<Real>>&, \
+    template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, std::vector<FillTriangle<Real>>&, \
                                         ClipVertexStore<Real>&, SetupCounts&, LightVectorsAt<Real>&);
 PHONGRAST_INSTANTIATE_SETUP(float)
 PHONGRAST_INSTANTIATE_SETUP(double)

@@ -1,6 +1,6 @@
-// Triangle set-up (internal header): each triangle, in painter's order,
+// Triangle set-up (internal header): each triangle, in mesh order,
 // culled, dropped (seed border rule) or clipped, snapped to fixed point and
-// turned into the DrawTriangles the fill reads, with flat and seed-Gouraud
+// turned into the FillTriangles the fill reads, with flat and seed-Gouraud
 // lighting done here once per triangle.
 #ifndef PHONGRAST_SRC_TRIANGLE_SETUP_HPP
 #define PHONGRAST_SRC_TRIANGLE_SETUP_HPP
@@ -9,13 +9,14 @@
 #include <memory>
 #include <vector>
 
+#include "closed_mesh.hpp"
+#include "draw_span.hpp"
 #include "fill_types.hpp"
-#include "scene_analysis.hpp"
 #include "vertex_stage.hpp"
 
 namespace phongrast::detail {
 
-/// Corners created by clipping, which draw triangles point to: stored in
+/// Corners created by clipping, which fill triangles point to: stored in
 /// blocks that never move, kept (and reused) from one frame to the next.
 template <typename Real>
 class ClipVertexStore {
@@ -45,48 +46,6 @@ struct SetupCounts {
     std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during set-up
 };
 
-/// Mesh triangles set up by one task (one chunk of the draw list).
-constexpr std::size_t kSetupChunk = 4096;
-
-/// A mesh triangle that set-up turned into draws, as painter's order and
-/// binning see it: 8 bytes, so that the sort moves little and binning does
-/// not read the draws themselves.
-class DrawnTriangle {
-public:
-    /// Bits of the place of a draw in its chunk's list (kSetupChunk triangles
-    /// of at most 6 pieces each fit); the chunk takes the other 17, so a mesh
-    /// has at most 2^29 triangles (validate_mesh() checks).
-    static constexpr int kFirstBits = 15;
-    static constexpr std::size_t kMaxTriangles = (std::size_t(1) << (32 - kFirstBits)) * kSetupChunk;
-
-    DrawnTriangle() = default;
-    /// One draw, touching bands [band_first, band_last] of kBandRows rows.
-    static DrawnTriangle one(std::size_t chunk, std::size_t first, int band_first, int band_last) {
-        return {chunk, first, static_cast<std::uint16_t>(band_first), static_cast<std::uint16_t>(band_last)};
-    }
-    /// `count` draws in a row (a clipped polygon's pieces): binning reads their rows.
-    static DrawnTriangle several(std::size_t chunk, std::size_t first, int count) {
-        return {chunk, first, static_cast<std::uint16_t>(count), kSeveral};
-    }
-
-    std::size_t chunk() const { return draw_ >> kFirstBits; }
-    std::size_t first() const { return draw_ & ((std::uint32_t(1) << kFirstBits) - 1); }
-    bool single() const { return band_last_ != kSeveral; }
-    int count() const { return single() ? 1 : band_first_; }
-    int band_first() const { return band_first_; }  ///< single() only
-    int band_last() const { return band_last_; }    ///< single() only
-
-private:
-    /// Not a band: images are at most 2^19 rows, 2^15 bands.
-    static constexpr std::uint16_t kSeveral = 0xffff;
-
-    DrawnTriangle(std::size_t chunk, std::size_t first, std::uint16_t a, std::uint16_t b)
-        : draw_(static_cast<std::uint32_t>(chunk << kFirstBits | first)), band_first_(a), band_last_(b) {}
-
-    std::uint32_t draw_ = 0;  ///< chunk << kFirstBits | place of its first draw there
-    std::uint16_t band_first_ = 0, band_last_ = 0;  ///< bands; or, when several, the count and kSeveral
-};
-
 /// Set-up's output, in mesh order: chunk after chunk of kSetupChunk mesh
 /// triangles, each chunk's draws in mesh order, and for each triangle that
 /// draws something its painter's-order key and where its draws are.
@@ -95,8 +54,8 @@ private:
 template <typename Real>
 struct DrawList {
     std::size_t chunks = 0;  ///< chunks of this frame (the vectors may hold more from earlier frames)
-    std::vector<std::vector<DrawTriangle<Real>>> chunk_draws;
-    std::vector<std::vector<DrawnTriangle>> chunk_drawn;
+    std::vector<std::vector<FillTriangle<Real>>> chunk_draws;
+    std::vector<std::vector<DrawSpan>> chunk_drawn;
     std::vector<std::vector<std::uint64_t>> chunk_keys;  ///< farthest_first_key() of each drawn triangle's mean z_c
     std::vector<ClipVertexStore<Real>> chunk_clip_vertices;
     std::vector<SetupCounts> chunk_counts;
@@ -112,7 +71,7 @@ struct SetupInput {
     const TransformedVertices<Real>& vertices;
     HiddenBackFaces cull;             ///< back_faces_to_cull()
     const PointShader<Real>& shader;  ///< lights flat centroids and seed-Gouraud corners
-    const FillSetup<Real>& fill;      ///< the uniform surface colour, when there is one
+    const FillConstants<Real>& fill_constants;  ///< the uniform surface colour, when there is one
     /// A scene of several materials: each triangle's material, and one shader
     /// per material (same effects, its own rig). Null: `shader` for every triangle.
     const std::uint32_t* triangle_surfaces = nullptr;
@@ -141,10 +100,10 @@ template <typename Real>
 void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, RenderStats& stats,
                       ProgressMonitor& progress);
 
-/// Sets up mesh triangle `source`: appends its draw triangles (none, one, or
+/// Sets up mesh triangle `source`: appends its fill triangles (none, one, or
 /// one per piece of its clipped polygon) to `out` and counts it in `counts`.
 template <typename Real>
-void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::vector<DrawTriangle<Real>>& out,
+void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::vector<FillTriangle<Real>>& out,
                      ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors);
 
 }  // namespace phongrast::detail

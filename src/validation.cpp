@@ -158,9 +158,9 @@ void validate_mesh(const Mesh& mesh, const glm::dvec3& colour_limit,
         throw std::invalid_argument("mesh: " + std::to_string(mesh.normals.size()) + " normals for " + vertices +
                                     " vertices (expected one per vertex, or none)");
     }
-    if (mesh.triangles.size() > DrawnTriangle::kMaxTriangles) {
+    if (mesh.triangles.size() > DrawSpan::kMaxTriangles) {
         throw std::invalid_argument("mesh: " + std::to_string(mesh.triangles.size()) + " triangles, expected at most " +
-                                    std::to_string(detail::DrawnTriangle::kMaxTriangles));
+                                    std::to_string(detail::DrawSpan::kMaxTriangles));
     }
     const std::size_t bad_triangle = first_bad(mesh.triangles.size(), [&](std::size_t i) {
         const Triangle& triangle = mesh.triangles[i];

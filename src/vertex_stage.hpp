@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "clipping.hpp"
-#include "normals_scratch.hpp"
+#include "normals.hpp"
 #include "phongrast/render.hpp"
 #include "progress_monitor.hpp"
 #include "shading.hpp"
+#include "varyings.hpp"
 #include "view.hpp"
 
 namespace phongrast::detail {

@@ -10,8 +10,8 @@ namespace pd = phongrast::detail;
 
 namespace {
 
-pd::DrawTriangle<float> draw_over_rows(int row_min, int row_max) {
-    pd::DrawTriangle<float> draw{};
+pd::FillTriangle<float> draw_over_rows(int row_min, int row_max) {
+    pd::FillTriangle<float> draw{};
     draw.coverage.row_min = row_min;
     draw.coverage.row_max = row_max;
     return draw;
@@ -19,9 +19,9 @@ pd::DrawTriangle<float> draw_over_rows(int row_min, int row_max) {
 
 }  // namespace
 
-/// A drawn triangle of one draw, as set-up records it.
-pd::DrawnTriangle one_draw(std::size_t chunk, std::size_t first, int row_min, int row_max) {
-    return pd::DrawnTriangle::one(chunk, first, row_min / pd::kBandRows, row_max / pd::kBandRows);
+/// The span of a triangle of one draw, as set-up records it.
+pd::DrawSpan one_draw(std::size_t chunk, std::size_t first, int row_min, int row_max) {
+    return pd::DrawSpan::one(chunk, first, row_min / pd::kBandRows, row_max / pd::kBandRows);
 }
 
 TEST_CASE("bins follow painter's order within each band, whatever chunk a draw came from") {
@@ -38,7 +38,7 @@ TEST_CASE("bins follow painter's order within each band, whatever chunk a draw c
 
     pd::PainterOrderMemory painter;
     // Painter's order: b's clipped triangle first, then a1, b0, a0, a2.
-    painter.sorted = {{0, pd::DrawnTriangle::several(1, 1, 2)}, {1, one_draw(0, 1, 10, 20)}, {2, one_draw(1, 0, 15, 16)},
+    painter.sorted = {{0, pd::DrawSpan::several(1, 1, 2)}, {1, one_draw(0, 1, 10, 20)}, {2, one_draw(1, 0, 15, 16)},
                       {3, one_draw(0, 0, 0, 3)}, {4, one_draw(0, 2, 33, 39)}};
 
     pd::BinningMemory memory;
@@ -46,12 +46,12 @@ TEST_CASE("bins follow painter's order within each band, whatever chunk a draw c
     pd::bin_draws(list, painter, kRows, memory, bins);
     REQUIRE(bins.bands == 3);
     const auto band = [&](int index) {
-        return std::vector<const pd::DrawTriangle<float>*>(bins.band_draws(index),
+        return std::vector<const pd::FillTriangle<float>*>(bins.band_draws(index),
                                                            bins.band_draws(index) + bins.band_size(index));
     };
-    CHECK(band(0) == std::vector<const pd::DrawTriangle<float>*>{&b[1], &a[1], &b[0], &a[0]});
-    CHECK(band(1) == std::vector<const pd::DrawTriangle<float>*>{&b[2], &a[1], &b[0]});
-    CHECK(band(2) == std::vector<const pd::DrawTriangle<float>*>{&b[2], &a[2]});
+    CHECK(band(0) == std::vector<const pd::FillTriangle<float>*>{&b[1], &a[1], &b[0], &a[0]});
+    CHECK(band(1) == std::vector<const pd::FillTriangle<float>*>{&b[2], &a[1], &b[0]});
+    CHECK(band(2) == std::vector<const pd::FillTriangle<float>*>{&b[2], &a[2]});
     CHECK(bins.draws.size() == 9);
 }
 

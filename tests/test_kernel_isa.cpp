@@ -7,7 +7,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "fill_types.hpp"
+#include "fill_dispatch.hpp"
 #include "phongrast/render.hpp"
 #include "phongrast/texture.hpp"
 #include "test_meshes.hpp"

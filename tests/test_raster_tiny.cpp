@@ -100,7 +100,7 @@ struct SpanRecorder {
 /// where it applies) and through the general for_each_weighted_row(): identical.
 template <typename Real, bool Perspective>
 void check_weights(const CoverageTriangle& t, const Real* depth, int row_begin, int row_end) {
-    DrawTriangle<Real> draw{};
+    FillTriangle<Real> draw{};
     draw.coverage = t;
     for (int i = 0; i < 3; ++i) draw.depth[i] = depth[i];
     phongrast::Image image;

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "effects.hpp"
 #include "fill_driver.hpp"
 #include "triangle_setup.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 struct SetUpOne {
     phongrast::Scene scene;
     phongrast::RenderOptions options = phongrast::RenderOptions::exact();
-    std::vector<pd::DrawTriangle<float>> draws;
+    std::vector<pd::FillTriangle<float>> draws;
     pd::SetupCounts counts;
     pd::TransformedVertices<float> vertices;
 
@@ -40,13 +41,13 @@ struct SetUpOne {
         const pd::PointShader<float> shader{&rig, effects, true};
         const pd::FillPlan<float> plan = pd::plan_fill(scene, options, effects, rig);
         const pd::SetupInput<float> input{scene, options, view, vertices, pd::HiddenBackFaces::unknown, shader,
-                                          plan.setup};
+                                          plan.constants};
         pd::ClipVertexStore<float> store;
         pd::LightVectorsAt<float> vectors;
         pd::set_up_triangle(input, 0, draws, store, counts, vectors);
     }
 
-    bool points_into_mesh(const pd::DrawTriangle<float>& draw) const {
+    bool points_into_mesh(const pd::FillTriangle<float>& draw) const {
         for (const pd::Varyings<float>* v : draw.v) {
             if (v < vertices.varyings.data() || v >= vertices.varyings.data() + vertices.varyings.size()) return false;
         }
@@ -65,7 +66,7 @@ TEST_CASE("a triangle inside the image is one draw pointing at the mesh's vertic
         REQUIRE(one.draws.size() == 1);
         CHECK(one.counts.drawn == 1);
         CHECK(one.counts.clipped == 0);
-        const pd::DrawTriangle<float>& draw = one.draws[0];
+        const pd::FillTriangle<float>& draw = one.draws[0];
         CHECK(draw.coverage.area2() > 0);
         REQUIRE(one.points_into_mesh(draw));
         CHECK(draw.coverage.row_min >= 0);
@@ -108,7 +109,7 @@ TEST_CASE("a triangle across the border is clipped (exact) or dropped (seed)") {
     CHECK(clipped.counts.clipped == 1);
     CHECK(clipped.counts.drawn == 1);
     REQUIRE(!clipped.draws.empty());
-    for (const pd::DrawTriangle<float>& draw : clipped.draws) {
+    for (const pd::FillTriangle<float>& draw : clipped.draws) {
         CHECK_FALSE(clipped.points_into_mesh(draw));  // the clipped corners live in the clip store
         CHECK(draw.coverage.column_max < 64);
     }
@@ -132,7 +133,7 @@ TEST_CASE("flat set-up lights the triangle once and gives every corner that colo
     flat.run();
     REQUIRE(flat.draws.size() == 1);
     CHECK(flat.counts.lit_points == 1);
-    const pd::DrawTriangle<float>& draw = flat.draws[0];
+    const pd::FillTriangle<float>& draw = flat.draws[0];
     CHECK(draw.lit[0] == draw.lit[1]);
     CHECK(draw.lit[1] == draw.lit[2]);
     CHECK(draw.lit[0].x > 0.0f);

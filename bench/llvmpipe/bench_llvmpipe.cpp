@@ -14,6 +14,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "mesh_orders.hpp"
 #include "pictures.hpp"
 #include "support/image_compare.hpp"
 #include "support/llvmpipe_renderer.hpp"
@@ -34,6 +35,7 @@ struct Settings {
     double seconds = 2.0;
     support::SpeedSceneSelection selection;
     std::string images_dir;
+    std::string order = "generator";  ///< the meshes' order (bench/mesh_orders.hpp)
 };
 
 /// phongrast (exact and seed) and llvmpipe on one scene and shader, in
@@ -108,6 +110,12 @@ void run(const Settings& settings) {
     // One scene in memory at a time: the 8M-triangle mesh alone is about 0.4 GB.
     for (const std::string& name : support::speed_scene_names(settings.selection, notes)) {
         NamedScene named = support::speed_scene(name);
+        if (settings.order != "generator") {
+            // The same mesh in another order: the same pictures, the goals read per order
+            // (bench_goals names its rows alike, so that bench/report.py joins them).
+            named.scene.mesh = phongrast_bench::in_mesh_order(named.scene.mesh, settings.order);
+            named.name += " (" + settings.order + ")";
+        }
         const bool huge = name == "icosphere-8M";
         const int repeat = huge ? std::min(settings.repeat, settings.huge_repeat) : settings.repeat;
         const int max_rounds = huge ? repeat : std::max(repeat, kMaxRounds);
@@ -140,6 +148,8 @@ int main(int argc, char** argv) {
     app.add_flag("--no-huge", no_huge, "skip the 8M-triangle 2048x2048 icosphere (seconds per frame)");
     app.add_flag("--no-assets", no_assets, "skip the meshes of ../shared/assets");
     app.add_option("--images", settings.images_dir, "write each scene's two renders and a difference heat map here");
+    app.add_option("--order", settings.order, "the meshes' order: generator, spatial or shuffled (bench/mesh_orders.hpp)")
+        ->check(CLI::IsMember(phongrast_bench::mesh_order_names()));
     CLI11_PARSE(app, argc, argv);
     settings.selection.large = !no_large;
     settings.selection.huge = !no_huge;

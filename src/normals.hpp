@@ -1,7 +1,7 @@
 // calculate_normals() into caller-owned memory (internal header), so that a
 // Renderer computes a mesh's normals frame after frame without allocating.
-#ifndef PHONGRAST_SRC_NORMALS_SCRATCH_HPP
-#define PHONGRAST_SRC_NORMALS_SCRATCH_HPP
+#ifndef PHONGRAST_SRC_NORMALS_HPP
+#define PHONGRAST_SRC_NORMALS_HPP
 
 #include <functional>
 #include <vector>
@@ -36,4 +36,4 @@ void keep_given_normals(const std::vector<glm::vec3>& given, std::vector<glm::ve
 
 }  // namespace phongrast::detail
 
-#endif  // PHONGRAST_SRC_NORMALS_SCRATCH_HPP
+#endif  // PHONGRAST_SRC_NORMALS_HPP

@@ -1,14 +1,11 @@
-// What a scene needs before any pixel is filled (internal header): the effect
-// set, and whether back faces can be seen at all.
-#ifndef PHONGRAST_SRC_SCENE_ANALYSIS_HPP
-#define PHONGRAST_SRC_SCENE_ANALYSIS_HPP
+// Whether back faces can be seen at all (internal header): only if the mesh
+// has a boundary or the eye is inside it; defined in closed_mesh.cpp.
+#ifndef PHONGRAST_SRC_CLOSED_MESH_HPP
+#define PHONGRAST_SRC_CLOSED_MESH_HPP
 
 #include "phongrast/render.hpp"
 
 namespace phongrast::detail {
-
-/// The lighting selection intersected with what the scene makes non-zero.
-EffectSet find_effects(const Scene& scene);
 
 /// Which winding faces the eye when back faces are hidden.
 enum class HiddenBackFaces {
@@ -24,4 +21,4 @@ HiddenBackFaces find_hidden_back_faces(const Mesh& mesh, const glm::dvec3& eye);
 
 }  // namespace phongrast::detail
 
-#endif  // PHONGRAST_SRC_SCENE_ANALYSIS_HPP
+#endif  // PHONGRAST_SRC_CLOSED_MESH_HPP
