@@ -61,15 +61,23 @@ int main(int argc, char** argv) {
         return 2;
     }
 
+    // The command given. (CLI11's got_subcommand(name) throws for a command
+    // that was not set up, which all but the named one are.)
+    const auto got = [&app](const char* name) {
+        for (const CLI::App* sub : app.get_subcommands()) {
+            if (sub->get_name() == name) return true;
+        }
+        return false;
+    };
     // render and sheet stop cleanly on Ctrl-C; batch keeps the default (its
     // supervisor and workers end, and a re-run resumes from the log).
-    if (app.got_subcommand("render") || app.got_subcommand("sheet")) catch_interrupts();
+    if (got("render") || got("sheet")) catch_interrupts();
     try {
-        if (app.got_subcommand("render")) return run_render(render);
-        if (app.got_subcommand("sheet")) return run_sheet(sheet);
-        if (app.got_subcommand("generate")) return run_generate(generate);
-        if (app.got_subcommand("batch")) return run_batch(batch);
-        if (app.got_subcommand("thumbnail")) return run_thumbnail(thumbnail);
+        if (got("render")) return run_render(render);
+        if (got("sheet")) return run_sheet(sheet);
+        if (got("generate")) return run_generate(generate);
+        if (got("batch")) return run_batch(batch);
+        if (got("thumbnail")) return run_thumbnail(thumbnail);
     } catch (const phongrast::RenderCancelled&) {
         // Only Ctrl-C cancels here; every file is written by rename, so none is half-written.
         std::cerr << "\nphongrast: interrupted; no output written\n";
