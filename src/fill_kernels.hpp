@@ -286,7 +286,7 @@ void fill_sample_batches(const FillTriangle<Real>& draw, FillTarget<Real>& targe
 
 /// Gouraud on a textured face, n samples at a time (structure of arrays, as
 /// shade_phong_batch() shades): (s, t), S and A interpolated in vector
-/// loops, then T x A + S lane by lane. Per lane the same operations in the
+/// loops, then T (filtered_texel_lanes()) and T x A + S in vector loops. Per lane the same operations in the
 /// same order as one sample at a time: (w0 a + w1 b) + w2 c for each
 /// attribute, T[c] * A[c] + S[c].
 template <typename Real>
@@ -299,17 +299,10 @@ PHONGRAST_FILL_INLINE void shade_lit_textured_lanes(const FillTriangle<Real>& dr
         interpolate_lanes(n, w, draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], specular[c]);
         interpolate_lanes(n, w, draw.lit[0][c], draw.lit[1][c], draw.lit[2][c], out[c]);  // A
     }
-    if (texture.filter == TextureFilter::trilinear) {
-        Lanes<Real> texel[3];
-        texture_lanes_trilinear(draw, n, w, s, t, texture, texel);
-        for (int c = 0; c < 3; ++c) {
-            for (int l = 0; l < n; ++l) out[c][l] = texel[c][l] * out[c][l] + specular[c][l];
-        }
-        return;
-    }
-    for (int l = 0; l < n; ++l) {
-        const Vec3<Real> texel = texture_at<Real>(texture, s[l], t[l]);
-        for (int c = 0; c < 3; ++c) out[c][l] = texel[c] * out[c][l] + specular[c][l];
+    Lanes<Real> texel[3];
+    filtered_texel_lanes(draw, n, w, s, t, texture, texel);
+    for (int c = 0; c < 3; ++c) {
+        for (int l = 0; l < n; ++l) out[c][l] = texel[c][l] * out[c][l] + specular[c][l];
     }
 }
 
@@ -350,17 +343,10 @@ void fill_flat_textured(const FillTriangle<Real>& draw, FillTarget<Real>& target
         Lanes<Real> s, t;
         interpolate_lanes(n, w, draw.v[0]->lit[0], draw.v[1]->lit[0], draw.v[2]->lit[0], s);
         interpolate_lanes(n, w, draw.v[0]->lit[1], draw.v[1]->lit[1], draw.v[2]->lit[1], t);
-        if (texture.filter == TextureFilter::trilinear) {
-            Lanes<Real> texel[3];
-            texture_lanes_trilinear(draw, n, w, s, t, texture, texel);
-            for (int c = 0; c < 3; ++c) {
-                for (int l = 0; l < n; ++l) out[c][l] = texel[c][l] * draw.lit[0][c] + draw.lit[1][c];
-            }
-            return;
-        }
-        for (int l = 0; l < n; ++l) {
-            const Vec3<Real> texel = texture_at<Real>(texture, s[l], t[l]);
-            for (int c = 0; c < 3; ++c) out[c][l] = texel[c] * draw.lit[0][c] + draw.lit[1][c];
+        Lanes<Real> texel[3];
+        filtered_texel_lanes(draw, n, w, s, t, texture, texel);
+        for (int c = 0; c < 3; ++c) {
+            for (int l = 0; l < n; ++l) out[c][l] = texel[c][l] * draw.lit[0][c] + draw.lit[1][c];
         }
     });
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -286,26 +287,112 @@ inline void texture_lanes_trilinear(const FillTriangle<Real>& draw, int n, const
     }
 }
 
+/// The bilinear T of n lanes into texel[3], texture_at()'s bits lane for
+/// lane. Lanes whose four texels lie inside the image (texture_at()'s fast
+/// path: most samples) are looked up in vector loops: x and y, their floors
+/// (a conversion: they are non-negative), the weights and the blend in the
+/// same operations and order as texture_at(), the texels read by offset; the
+/// others then go through texture_at() one by one.
+template <typename Real>
+PHONGRAST_FILL_INLINE void bilinear_lanes(const KernelTexture& texture, int n, const Lanes<Real>& s,
+                                          const Lanes<Real>& t, Lanes<Real>* texel) {
+    const long long columns = texture.columns, rows = texture.rows;
+    // texture_at()'s limit (2^24 texels a side), offsets in 32 bits, and the four texels of
+    // an inside lane within the array (at least 2 x 2).
+    const bool vectors = columns >= 2 && rows >= 2 && columns - 2 < (1ll << 24) && rows - 2 < (1ll << 24) &&
+                         columns * rows <= 0x7fffffffll;
+    if (!vectors) {
+        for (int l = 0; l < n; ++l) {
+            const Vec3<Real> value = texture_at<Real>(texture, s[l], t[l]);
+            for (int c = 0; c < 3; ++c) texel[c][l] = value[c];
+        }
+        return;
+    }
+    const Real width = Real(texture.columns), height = Real(texture.rows);
+    const Real column_limit = static_cast<Real>(columns - 1), row_limit = static_cast<Real>(rows - 1);
+    const std::int32_t stride = texture.columns;
+    Lanes<Real> a, b;
+    std::int32_t offset[kSampleBatch], inside[kSampleBatch];
+    int outside = 0;
+    for (int l = 0; l < n; ++l) {
+        const Real x = s[l] * width - Real(0.5);
+        const Real y = (Real(1) - t[l]) * height - Real(0.5);
+        // floor(x) in [0, columns - 2] exactly when 0 <= x < columns - 1 (a NaN is neither).
+        // (& rather than &&: no branch, so that the loop vectorises.)
+        const bool in = (x >= Real(0)) & (x < column_limit) & (y >= Real(0)) & (y < row_limit);
+        const std::int32_t j = static_cast<std::int32_t>(in ? x : Real(0));  // floor(x)
+        const std::int32_t i = static_cast<std::int32_t>(in ? y : Real(0));
+        a[l] = x - static_cast<Real>(j);
+        b[l] = y - static_cast<Real>(i);
+        offset[l] = i * stride + j;
+        inside[l] = in;
+        outside += 1 - inside[l];  // (written so, the loop vectorises: GCC 12)
+    }
+    Lanes<Real> t00[3], t01[3], t10[3], t11[3];
+    for (int l = 0; l < n; ++l) {
+        const glm::vec3* p = texture.texels + offset[l];  // offset 0 for a lane outside: read, then replaced
+        for (int c = 0; c < 3; ++c) {
+            t00[c][l] = static_cast<Real>(p[0][c]);
+            t01[c][l] = static_cast<Real>(p[1][c]);
+            t10[c][l] = static_cast<Real>(p[stride][c]);
+            t11[c][l] = static_cast<Real>(p[stride + 1][c]);
+        }
+    }
+    const Real one = Real(1);
+    for (int l = 0; l < n; ++l) {
+        const Real w00 = (one - a[l]) * (one - b[l]), w01 = a[l] * (one - b[l]);
+        const Real w10 = (one - a[l]) * b[l], w11 = a[l] * b[l];
+        for (int c = 0; c < 3; ++c) {
+            texel[c][l] = ((w00 * t00[c][l] + w01 * t01[c][l]) + w10 * t10[c][l]) + w11 * t11[c][l];
+        }
+    }
+    if (outside == 0) return;
+    for (int l = 0; l < n; ++l) {
+        if (inside[l]) continue;
+        const Vec3<Real> value = texture_at<Real>(texture, s[l], t[l]);
+        for (int c = 0; c < 3; ++c) texel[c][l] = value[c];
+    }
+}
+
+/// T of n lanes at their (s, t) into texel[3]: bilinear_lanes(), or texture_at() lane by lane.
+template <typename Real>
+PHONGRAST_FILL_INLINE void texel_lanes(const KernelTexture& texture, int n, const Lanes<Real>& s, const Lanes<Real>& t,
+                                       Lanes<Real>* texel) {
+    if (texture.filter == TextureFilter::bilinear) {
+        bilinear_lanes(texture, n, s, t, texel);
+        return;
+    }
+    for (int l = 0; l < n; ++l) {
+        const Vec3<Real> value = texture_at<Real>(texture, s[l], t[l]);
+        for (int c = 0; c < 3; ++c) texel[c][l] = value[c];
+    }
+}
+
+/// T of n lanes of `draw` at their (s, t) into texel[3], by the texture's
+/// filter (trilinear reads the triangle for the derivatives of (s, t)).
+template <typename Real>
+PHONGRAST_FILL_INLINE void filtered_texel_lanes(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w,
+                                                const Lanes<Real>& s, const Lanes<Real>& t,
+                                                const KernelTexture& texture, Lanes<Real>* texel) {
+    if (texture.filter == TextureFilter::trilinear) {
+        texture_lanes_trilinear(draw, n, w, s, t, texture, texel);
+    } else {
+        texel_lanes(texture, n, s, t, texel);
+    }
+}
+
 /// Multiplies each lane's colour by T at its (s, t), which Phong's textured
 /// faces carry in their vertices' `lit` (interpolated like every attribute).
 template <typename Real>
 inline void texture_lanes(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w, const KernelTexture& texture,
                           Lanes<Real>* color) {
     if (texture.texels == nullptr) return;  // no texture, or an unreadable one: T = 1
-    Lanes<Real> s, t;
+    Lanes<Real> s, t, texel[3];
     interpolate_lanes(n, w, draw.v[0]->lit[0], draw.v[1]->lit[0], draw.v[2]->lit[0], s);
     interpolate_lanes(n, w, draw.v[0]->lit[1], draw.v[1]->lit[1], draw.v[2]->lit[1], t);
-    if (texture.filter == TextureFilter::trilinear) {
-        Lanes<Real> texel[3];
-        texture_lanes_trilinear(draw, n, w, s, t, texture, texel);
-        for (int c = 0; c < 3; ++c) {
-            for (int l = 0; l < n; ++l) color[c][l] *= texel[c][l];
-        }
-        return;
-    }
-    for (int l = 0; l < n; ++l) {
-        const Vec3<Real> texel = texture_at<Real>(texture, s[l], t[l]);
-        for (int c = 0; c < 3; ++c) color[c][l] *= texel[c];
+    filtered_texel_lanes(draw, n, w, s, t, texture, texel);
+    for (int c = 0; c < 3; ++c) {
+        for (int l = 0; l < n; ++l) color[c][l] *= texel[c][l];
     }
 }
 

@@ -246,6 +246,8 @@ PhongMaterial envelope(const std::vector<Surface>& surfaces) {
     return result;
 }
 
+}  // namespace
+
 void copy_view_fields(const Scene& from, Scene& to) {
     to.camera = from.camera;
     to.image = from.image;
@@ -256,8 +258,6 @@ void copy_view_fields(const Scene& from, Scene& to) {
     to.normals = from.normals;
 }
 
-}  // namespace
-
 bool needs_assembly(const Scene& scene) {
     const Mesh& mesh = scene.mesh;
     return !scene.objects.empty() || !scene.material_fields.empty() || !mesh.face_materials.empty() ||
@@ -265,8 +265,8 @@ bool needs_assembly(const Scene& scene) {
            (scene.normals == NormalSource::file && !mesh.file_normal_triangles.empty());
 }
 
-void assemble_scene(const Scene& scene, AssembledScene& out, NormalsScratch& scratch) {
-    validate_scene_objects(scene);
+void assemble_scene(const Scene& scene, AssembledScene& out, NormalsScratch& scratch, CheckedTextures* checked) {
+    validate_scene_objects(scene, checked);
     out.surfaces.clear();
     out.texcoords.clear();
     out.triangle_surfaces.clear();
@@ -293,78 +293,6 @@ void assemble_scene(const Scene& scene, AssembledScene& out, NormalsScratch& scr
     }
     copy_view_fields(scene, out.scene);
     out.scene.material = out.single_surface() ? out.surfaces[0].material : envelope(out.surfaces);
-}
-
-const AssembledScene& SceneAssembly::assemble(const Scene& scene) {
-    if (valid_ && same_as_before(scene)) {
-        copy_view_fields(scene, assembled.scene);
-        return assembled;
-    }
-    valid_ = false;
-    assemble_scene(scene, assembled, normals_scratch);
-    remember(scene);
-    return assembled;
-}
-
-namespace {
-
-void mesh_sizes(const Mesh& mesh, std::size_t (&sizes)[8]) {
-    sizes[0] = mesh.positions.size();
-    sizes[1] = mesh.colors.size();
-    sizes[2] = mesh.triangles.size();
-    sizes[3] = mesh.texcoords.size();
-    sizes[4] = mesh.texcoord_triangles.size();
-    sizes[5] = mesh.file_normals.size();
-    sizes[6] = mesh.file_normal_triangles.size();
-    sizes[7] = mesh.face_materials.size() + (mesh.materials.size() << 32);
-}
-
-bool same_fields(const MaterialFields& a, const MaterialFields& b) {
-    return a.ka == b.ka && a.kd == b.kd && a.ks == b.ks && a.n == b.n;
-}
-
-bool same_material(const PhongMaterial& a, const PhongMaterial& b) {
-    return a.ka == b.ka && a.kd == b.kd && a.ks == b.ks && a.n == b.n;
-}
-
-}  // namespace
-
-bool SceneAssembly::same_as_before(const Scene& scene) const {
-    // A `mesh` scene may have changed in place: never reused.
-    if (scene.objects.empty() || scene.objects.size() != key_.size()) return false;
-    if (!same_material(scene.material, key_material_) || !same_fields(scene.material_fields, key_material_fields_) ||
-        scene.normals != key_normals_) {
-        return false;
-    }
-    for (std::size_t i = 0; i < key_.size(); ++i) {
-        const SceneObject& object = scene.objects[i];
-        const ObjectKey& key = key_[i];
-        if (object.mesh.get() != key.mesh || object.transform != key.transform ||
-            !same_fields(object.material, key.material) || object.normals != key.normals) {
-            return false;
-        }
-        std::size_t sizes[8];
-        mesh_sizes(*object.mesh, sizes);
-        if (!std::equal(sizes, sizes + 8, key.sizes)) return false;
-    }
-    return true;
-}
-
-void SceneAssembly::remember(const Scene& scene) {
-    key_.clear();
-    for (const SceneObject& object : scene.objects) {
-        ObjectKey key;
-        key.mesh = object.mesh.get();
-        mesh_sizes(*object.mesh, key.sizes);
-        key.transform = object.transform;
-        key.material = object.material;
-        key.normals = object.normals;
-        key_.push_back(key);
-    }
-    key_material_ = scene.material;
-    key_material_fields_ = scene.material_fields;
-    key_normals_ = scene.normals;
-    valid_ = !scene.objects.empty();
 }
 
 }  // namespace phongrast::detail

@@ -6,6 +6,7 @@
 #ifndef PHONGRAST_SRC_SCENE_ASSEMBLY_HPP
 #define PHONGRAST_SRC_SCENE_ASSEMBLY_HPP
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -54,19 +55,46 @@ struct AssembledScene {
 /// with Scene::normals = file), or scene.material_fields is set.
 bool needs_assembly(const Scene& scene);
 
+/// Texture images whose texels were found finite, so that a Renderer scans
+/// each image once rather than every frame. An image is recognised by its
+/// address, its texel array's address and its dimensions, and is held (so
+/// that its address cannot be reused by another image meanwhile); only the
+/// images of the last assembled scene are kept.
+struct CheckedTextures {
+    struct Entry {
+        std::shared_ptr<const TextureImage> image;
+        const void* texels = nullptr;
+        std::size_t count = 0;
+        int rows = 0, columns = 0;
+    };
+    std::vector<Entry> entries;
+    bool contains(const TextureImage& image) const;
+    /// Every image held still has the texel array and dimensions it was checked with.
+    bool unchanged() const;
+};
+
 /// The version-2 checks of a scene (objects, their transforms and meshes,
 /// per-corner and per-face indices, texture coordinates, materials); throws
 /// std::invalid_argument naming the member ("objects[2].transform: singular").
 /// Kept apart from validate_render_request(), which then checks the assembled scene.
-void validate_scene_objects(const Scene& scene);
+/// With `checked`, the texels of an image it contains are not scanned again
+/// (dimensions are), and it is left holding the scene's images.
+void validate_scene_objects(const Scene& scene, CheckedTextures* checked = nullptr);
 
-/// A Renderer's assembly, kept from frame to frame: an objects scene whose
-/// meshes (by address and size), transforms, materials and normal sources
-/// are those of the previous frame is not assembled again. A `mesh` scene
-/// is held by value and may change in place, so it is assembled every frame.
+/// A Renderer's assembly, kept from frame to frame. A scene is assembled
+/// again only when something assembly reads differs from the last assembled
+/// scene: the meshes' contents (every array compared bit for bit against a
+/// copy, so a mesh edited in place between frames is assembled again, as
+/// mesh order's rule asks: a guess may cost speed, never correctness), the
+/// objects' transforms, materials and normal sources, and the scene's
+/// material, material fields and normal source. Texture images are read,
+/// not copied, so texels edited in place show in the next frame without a
+/// new assembly; their finiteness is checked once per image
+/// (CheckedTextures).
 struct SceneAssembly {
     AssembledScene assembled;
     NormalsScratch normals_scratch;
+    std::size_t assemblies = 0;  ///< scenes assembled so far (tests: an unchanged scene is not assembled again)
 
     /// validate_scene_objects(scene), then the assembled scene (reused when
     /// nothing it depends on changed); its non-mesh fields are `scene`'s.
@@ -78,24 +106,32 @@ struct SceneAssembly {
 
 private:
     struct ObjectKey {
-        const Mesh* mesh = nullptr;
-        std::size_t sizes[8] = {};
+        std::size_t snapshot = 0;  ///< index into snapshots_ of its mesh's copy
+        std::size_t first_use = 0; ///< the first object (this frame's numbering) holding the same mesh
         glm::dmat4 transform{1.0};
         MaterialFields material;
         std::optional<NormalSource> normals;
     };
-    std::vector<ObjectKey> key_;
+    bool mesh_scene_ = false;  ///< the last scene was a `mesh` scene (snapshots_[0] its mesh)
+    std::vector<Mesh> snapshots_;  ///< the distinct source meshes' contents, as last assembled
+    std::vector<ObjectKey> objects_;
     PhongMaterial key_material_;
     MaterialFields key_material_fields_;
     NormalSource key_normals_ = NormalSource::computed;
+    CheckedTextures checked_textures_;
     bool valid_ = false;
 
     bool same_as_before(const Scene& scene) const;
     void remember(const Scene& scene);
 };
 
-/// assemble() without the cache (tests, validate_render()).
-void assemble_scene(const Scene& scene, AssembledScene& out, NormalsScratch& scratch);
+/// The fields assembly does not read (camera, image, lights, ...), from `from` into `to`.
+void copy_view_fields(const Scene& from, Scene& to);
+
+/// assemble() without the cache (tests, validate_render()); `checked` as
+/// validate_scene_objects() takes it.
+void assemble_scene(const Scene& scene, AssembledScene& out, NormalsScratch& scratch,
+                    CheckedTextures* checked = nullptr);
 
 }  // namespace phongrast::detail
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
@@ -67,21 +68,28 @@ void check_corner_indices(const std::vector<Triangle>& triples, std::size_t tria
     }
 }
 
-void check_texture(const TextureImage& image, const std::string& member) {
+/// What validation learns of the texture images (validate_scene_objects()'s `checked`).
+struct TextureScan {
+    const CheckedTextures* before = nullptr;  ///< images whose texels need no scan
+    CheckedTextures now;                      ///< this scene's images
+};
+
+/// `scan_texels` false: the texels were found finite before (CheckedTextures).
+void check_texture(const TextureImage& image, const std::string& member, bool scan_texels) {
     if (image.rows < 1 || image.columns < 1 ||
         image.texels.size() != static_cast<std::size_t>(image.rows) * static_cast<std::size_t>(image.columns)) {
         fail(member, "image '" + image.name + "' of " + std::to_string(image.rows) + " x " +
                          std::to_string(image.columns) + " texels holds " + std::to_string(image.texels.size()) +
                          " (expected rows x columns, at least 1 x 1)");
     }
-    for (std::size_t i = 0; i < image.texels.size(); ++i) {
+    for (std::size_t i = 0; scan_texels && i < image.texels.size(); ++i) {
         if (!all_finite(image.texels[i])) {
             fail(member, "image '" + image.name + "': texel " + std::to_string(i) + " is not finite");
         }
     }
 }
 
-void check_mesh(const Mesh& mesh, const std::string& member) {
+void check_mesh(const Mesh& mesh, const std::string& member, TextureScan* scan) {
     try {
         const double any = std::numeric_limits<double>::infinity();
         validate_mesh(mesh, glm::dvec3(any), [](const glm::vec3&) { return 0.0; });
@@ -118,16 +126,26 @@ void check_mesh(const Mesh& mesh, const std::string& member) {
                                  (material.name.empty() ? std::string() : " (" + material.name + ")");
         check_fields(material.coefficients, name);
         if (!all_finite(material.color_factor)) fail(name + ".color_factor", "expected finite numbers");
-        if (material.texture && material.texture->image) check_texture(*material.texture->image, name + ".texture");
+        if (!material.texture || !material.texture->image) continue;
+        const std::shared_ptr<const TextureImage>& image = material.texture->image;
+        const bool known = scan != nullptr && scan->before != nullptr && scan->before->contains(*image);
+        check_texture(*image, name + ".texture", !known);
+        if (scan != nullptr && !scan->now.contains(*image)) {
+            scan->now.entries.push_back({image, image->texels.data(), image->texels.size(), image->rows, image->columns});
+        }
     }
 }
 
 }  // namespace
 
-void validate_scene_objects(const Scene& scene) {
+void validate_scene_objects(const Scene& scene, CheckedTextures* checked) {
+    TextureScan scan;
+    scan.before = checked;
+    TextureScan* const texture_scan = checked != nullptr ? &scan : nullptr;
     check_fields(scene.material_fields, "material");
     if (scene.objects.empty()) {
-        check_mesh(scene.mesh, "mesh");
+        check_mesh(scene.mesh, "mesh", texture_scan);
+        if (checked != nullptr) *checked = std::move(scan.now);
         return;
     }
     if (!scene.mesh.positions.empty() || !scene.mesh.triangles.empty()) {
@@ -139,8 +157,9 @@ void validate_scene_objects(const Scene& scene) {
         if (!object.mesh) fail(member + ".mesh", "null (expected a mesh)");
         check_transform(object.transform, member + ".transform");
         check_fields(object.material, member + ".material");
-        check_mesh(*object.mesh, member + ".mesh");
+        check_mesh(*object.mesh, member + ".mesh", texture_scan);
     }
+    if (checked != nullptr) *checked = std::move(scan.now);
 }
 
 }  // namespace phongrast::detail
