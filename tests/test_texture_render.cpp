@@ -321,7 +321,7 @@ TEST_CASE("supersampling averages textured samples, and faces without texture co
     CHECK(result.image.at(5, 4) != glm::vec3(1.0f));  // lower right: triangle 0, textured
 }
 
-TEST_CASE("every shader draws textures with every filter; a broken texture image is refused, naming the field") {
+TEST_CASE("every shader draws textures with every filter, and a broken texture image is refused, naming the field") {
     const auto image = numbered_texture(2, 2);
     const glm::dvec3 corners[4] = {{-0.5, -0.5, 0.0}, {0.5, -0.5, 0.0}, {0.5, 0.5, 0.0}, {-0.5, 0.5, 0.0}};
     const glm::vec2 st[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};

@@ -170,7 +170,7 @@ TEST_CASE("the mip pyramid of odd sizes: floor(n / 2) texels, each the area mean
     CHECK(broken->mip_levels().empty());
 }
 
-TEST_CASE("the pyramid is built once per image, whichever threads ask first; a copy builds its own") {
+TEST_CASE("the pyramid is built once per image, whichever threads ask first, and a copy builds its own") {
     const auto image = random_texture(64, 32, 7);
     std::vector<const std::vector<MipLevel>*> seen(4, nullptr);
     std::vector<std::thread> threads;
@@ -188,7 +188,7 @@ TEST_CASE("the pyramid is built once per image, whichever threads ask first; a c
     CHECK(copy.mip_levels().back().texels == seen[0]->back().texels);
 }
 
-TEST_CASE("lambda: log2 of the longer step in level-0 texels; degenerate and non-finite derivatives") {
+TEST_CASE("lambda: log2 of the longer step in level-0 texels, with degenerate and non-finite derivatives") {
     // A step of 1/64 in s on 256 columns is 4 texels: lambda 2.
     CHECK(mip_lambda(1.0 / 64.0, 0.0, 0.0, 1.0 / 64.0, 256, 256) == 2.0);
     // The longer of the two steps counts: (3, 4) texels is 5 long.
@@ -268,7 +268,7 @@ TEST_CASE("the kernels' trilinear lookup against the double reference, each wrap
     }
 }
 
-TEST_CASE("a screen-aligned quad minified 4 times: every pixel is level 2; 2 x 2 samples: level 1 at each sample") {
+TEST_CASE("a screen-aligned quad minified 4 times: every pixel is level 2, with 2 x 2 samples level 1 at each sample") {
     const int size = 64;
     const TextureMap map = map_of(random_texture(256, 256, 11));
     const Scene scene = screen_quad(map, size, 1.0f);  // 256 texels over 64 pixels
