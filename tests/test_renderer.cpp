@@ -239,7 +239,7 @@ TEST_CASE("render() forgets the scene between calls: a mesh changed in place at 
     check_same_stats(after.stats, fresh.stats);
 }
 
-TEST_CASE("render() from a progress callback gets its own memory; a failed call leaves none behind") {
+TEST_CASE("render() from a progress callback gets its own memory, and a failed call leaves none behind") {
     const Scene outer = sphere(20, 60, 60, Shader::phong, false);
     const Scene inner = sphere(9, 30, 40, Shader::gouraud, true);
     release_render_memory();
@@ -266,7 +266,7 @@ TEST_CASE("render() from a progress callback gets its own memory; a failed call 
     check_warm_equals_fresh(outer, RenderOptions::exact());
 }
 
-TEST_CASE("render() keeps memory for small frames only; a repeated small call allocates little") {
+TEST_CASE("render() keeps memory for small frames only, and a repeated small call allocates little") {
     const Scene small = sphere(16, 64, 80, Shader::phong, false);
     release_render_memory();
     const long first = allocations_during([&] { render(small); });

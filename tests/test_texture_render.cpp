@@ -15,6 +15,7 @@
 
 #include "phongrast/render.hpp"
 #include "phongrast/texture.hpp"
+#include "textured_quad.hpp"
 
 using namespace phongrast;
 
@@ -101,19 +102,7 @@ Scene textured_quad_scene(const Mesh& quad, int size) {
 
 /// A quad with corners `corners` (counter-clockwise seen from +z) and (s, t) at them, textured by `map`.
 Mesh quad(const glm::dvec3 (&corners)[4], const glm::vec2 (&st)[4], const TextureMap& map) {
-    Mesh mesh;
-    for (int k = 0; k < 4; ++k) {
-        mesh.positions.push_back(corners[k]);
-        mesh.texcoords.push_back(st[k]);
-    }
-    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-    mesh.texcoord_triangles = mesh.triangles;
-    FaceMaterial material;
-    material.name = "textured";
-    material.texture = map;
-    mesh.materials = {material};
-    mesh.face_materials = {0, 0};
-    return mesh;
+    return textured_quad_mesh(corners, st, map);
 }
 
 }  // namespace

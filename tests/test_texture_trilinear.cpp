@@ -20,6 +20,7 @@
 #include "phongrast/render.hpp"
 #include "phongrast/texture.hpp"
 #include "resolve.hpp"
+#include "textured_quad.hpp"
 
 using namespace phongrast;
 
@@ -76,18 +77,7 @@ Scene textured_quad_scene(const glm::dvec3 (&corners)[4], const glm::vec2 (&st)[
     scene.ambient = glm::vec3(1.0f);
     scene.lighting = Lighting::only_ambient();
     scene.shader = Shader::phong;
-    Mesh& mesh = scene.mesh;
-    for (int k = 0; k < 4; ++k) {
-        mesh.positions.push_back(corners[k]);
-        mesh.texcoords.push_back(st[k]);
-    }
-    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-    mesh.texcoord_triangles = mesh.triangles;
-    FaceMaterial material;
-    material.name = "textured";
-    material.texture = map;
-    mesh.materials = {material};
-    mesh.face_materials = {0, 0};
+    scene.mesh = textured_quad_mesh(corners, st, map);
     return scene;
 }
 
