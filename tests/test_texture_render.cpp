@@ -85,20 +85,6 @@ TEST_CASE("the bilinear lookup by hand: texel centres, midpoints, and each wrap 
 
 namespace {
 
-/// The camera sees the plane z = 0, [-0.5, 0.5]^2, as exactly the whole image.
-Scene textured_quad_scene(const Mesh& quad, int size) {
-    Scene scene;
-    scene.camera.eye = glm::dvec3(0.0, 0.0, 1.0);
-    scene.camera.lookat = glm::dvec3(0.0);
-    scene.image.rows = scene.image.columns = size;
-    scene.image.background = glm::vec3(-1.0f);
-    scene.material = PhongMaterial{glm::vec3(1.0f), glm::vec3(0.0f), glm::vec3(0.0f), 1.0f};
-    scene.ambient = glm::vec3(1.0f);
-    scene.lighting = Lighting::only_ambient();  // pixel = 1 x 1 x (c = 1) x T: the texel itself
-    scene.mesh = quad;
-    scene.shader = Shader::phong;
-    return scene;
-}
 
 /// A quad with corners `corners` (counter-clockwise seen from +z) and (s, t) at them, textured by `map`.
 Mesh quad(const glm::dvec3 (&corners)[4], const glm::vec2 (&st)[4], const TextureMap& map) {

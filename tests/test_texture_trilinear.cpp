@@ -65,20 +65,9 @@ double largest_difference(const glm::dvec3& a, const glm::dvec3& b) {
     return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
 }
 
-/// The camera sees the plane z = 0, [-0.5, 0.5]^2, as exactly the whole image;
-/// only ambient light of 1 on ka = 1: each pixel is T itself.
+/// textured_quad_scene() of the quad over `corners` with (s, t) `st`.
 Scene textured_quad_scene(const glm::dvec3 (&corners)[4], const glm::vec2 (&st)[4], const TextureMap& map, int size) {
-    Scene scene;
-    scene.camera.eye = glm::dvec3(0.0, 0.0, 1.0);
-    scene.camera.lookat = glm::dvec3(0.0);
-    scene.image.rows = scene.image.columns = size;
-    scene.image.background = glm::vec3(-1.0f);
-    scene.material = PhongMaterial{glm::vec3(1.0f), glm::vec3(0.0f), glm::vec3(0.0f), 1.0f};
-    scene.ambient = glm::vec3(1.0f);
-    scene.lighting = Lighting::only_ambient();
-    scene.shader = Shader::phong;
-    scene.mesh = textured_quad_mesh(corners, st, map);
-    return scene;
+    return ::textured_quad_scene(textured_quad_mesh(corners, st, map), size);
 }
 
 /// The screen-filling quad with (s, t) from (0, 0) at the lower left to `repeat` at the upper right.
