@@ -158,7 +158,7 @@ namespace {
 
 /// render()'s memory on this thread, kept for its next call: a fresh
 /// RendererState faults in its buffers page by page, which costs a small
-/// frame several times its drawing (docs/performance.md, "One-off calls").
+/// frame several times its drawing (docs/startup.md, "One-off calls").
 /// Only the memory is reused: what a Renderer remembers about the previous
 /// scene (the mesh order, the assembly) is forgotten before every call, so
 /// each call computes what a fresh state would, and draws the same picture.
