@@ -424,6 +424,31 @@ void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::v
     TriangleSetup<Real>(input, out, clip_vertices, counts, vectors).run(source);
 }
 
+/// Maps a growing vector's reserved pages in steps of 64 KiB a little
+/// ahead of its end (populate_pages.hpp): one call per step instead of a
+/// page fault per 4 KiB, and never more than a step beyond what is written.
+template <typename T>
+class RecordPages {
+public:
+    void map_ahead(std::vector<T>& records) {
+        if (records.data() != base_) {  // new storage (first call, or grown past its reservation)
+            base_ = records.data();
+            mapped_ = records.size();
+        }
+        // A triangle writes a few records at most (more only when clipped: then faults as before).
+        if (records.size() + kAhead <= mapped_ || mapped_ >= records.capacity()) return;
+        const std::size_t next = std::min(records.capacity(), std::max(mapped_, records.size()) + kStep);
+        populate_for_writing(records.data() + mapped_, (next - mapped_) * sizeof(T));
+        mapped_ = next;
+    }
+
+private:
+    static constexpr std::size_t kStep = std::max<std::size_t>(1, (std::size_t(64) << 10) / sizeof(T));
+    static constexpr std::size_t kAhead = 4;
+    const T* base_ = nullptr;
+    std::size_t mapped_ = 0;
+};
+
 template <typename Real>
 void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, RenderStats& stats,
                       ProgressMonitor& progress) {
@@ -445,16 +470,23 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
         std::vector<FillTriangle<Real>>& out = draws.chunk_draws[chunk];
         std::vector<DrawSpan>& drawn = draws.chunk_drawn[chunk];
         std::vector<std::uint64_t>& keys = draws.chunk_keys[chunk];
+        // Room for every triangle of the chunk, its pages mapped a step
+        // ahead of the writes (RecordPages) rather than all at once:
+        // triangles that cover no sample, lie outside the view or are culled
+        // leave their records unwritten (a fifth of the 8M-triangle mesh's),
+        // and mapping those would add to the peak memory.
         out.clear();
-        reserve_populated(out, end - begin);
+        out.reserve(end - begin);
         drawn.clear();
-        reserve_populated(drawn, end - begin);
+        drawn.reserve(end - begin);
         keys.clear();
-        reserve_populated(keys, end - begin);
+        keys.reserve(end - begin);
         draws.chunk_clip_vertices[chunk].clear();
         TriangleSetup<Real> setup(input, out, draws.chunk_clip_vertices[chunk], draws.chunk_counts[chunk],
                                   draws.chunk_vectors[chunk]);
+        RecordPages<FillTriangle<Real>> pages;
         for (std::size_t t = begin; t < end; ++t) {
+            pages.map_ahead(out);
             const std::size_t first = out.size();
             setup.run(static_cast<std::uint32_t>(t));
             if (out.size() == first) continue;
