@@ -72,14 +72,17 @@ TEST_CASE("populate: writing a populated buffer takes (nearly) no page faults") 
     const long faults_before = minor_faults();
     buffer.resize(kBytes, 1);
     const long faults = minor_faults() - faults_before;
-    INFO("faults while writing 4,096 populated pages: " << faults);
-    CHECK(faults < 64);  // without the call: one per page, 4,096 (checked below)
 
     std::vector<unsigned char> unpopulated;
     unpopulated.reserve(kBytes);
     const long faults_plain_before = minor_faults();
     unpopulated.resize(kBytes, 1);
     const long faults_plain = minor_faults() - faults_plain_before;
-    INFO("faults while writing 4,096 fresh pages: " << faults_plain);
-    CHECK(faults_plain > 1000);  // the control: this measure does see faults
+    INFO("faults while writing 4,096 populated pages: " << faults << "; 4,096 fresh pages: " << faults_plain);
+    CHECK(faults_plain >= 4096);  // the control: this measure sees a fault per fresh page
+    // Populated, the buffer's own pages take none; what faults remain are not
+    // the buffer's (under AddressSanitizer its shadow memory, an eighth of
+    // the buffer: 512 pages, which the unpopulated write pays as well).
+    CHECK(faults * 4 < faults_plain);
+    CHECK(faults_plain - faults >= 4000);
 }
