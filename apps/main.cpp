@@ -3,8 +3,10 @@
 // message names the file, line or field and what was expected), 130 after
 // Ctrl-C (nothing written), 1 for anything unexpected.
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <string>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -32,8 +34,15 @@ int main(int argc, char** argv) {
     // so only that one is set up. With no command named (--help, --version,
     // a mistake) all are, so that the top-level help and errors list them.
     const std::string named = argc > 1 ? argv[1] : "";
-    const bool any = named != "render" && named != "sheet" && named != "generate" && named != "batch" &&
-                     named != "thumbnail";
+    const std::pair<const char*, std::function<void()>> commands[] = {
+        {"render", [&] { add_render_command(app, render); }},
+        {"sheet", [&] { add_sheet_command(app, sheet); }},
+        {"generate", [&] { add_generate_command(app, generate); }},
+        {"batch", [&] { add_batch_command(app, batch); }},
+        {"thumbnail", [&] { add_thumbnail_command(app, thumbnail); }},
+    };
+    bool any = true;
+    for (const auto& [name, add] : commands) any = any && named != name;
     if (any && !named.empty() && named[0] != '-') {
         std::cerr << "phongrast: error: unknown command '" << named
                   << "'; expected render, sheet, generate, batch or thumbnail; see phongrast --help\n";
@@ -43,11 +52,9 @@ int main(int argc, char** argv) {
         std::cout << "phongrast " PHONGRAST_VERSION_STRING "\n";  // as CLI11's version flag prints it
         return 0;
     }
-    if (any || named == "render") add_render_command(app, render);
-    if (any || named == "sheet") add_sheet_command(app, sheet);
-    if (any || named == "generate") add_generate_command(app, generate);
-    if (any || named == "batch") add_batch_command(app, batch);
-    if (any || named == "thumbnail") add_thumbnail_command(app, thumbnail);
+    for (const auto& [name, add] : commands) {
+        if (any || named == name) add();
+    }
 
     try {
         app.parse(argc, argv);
@@ -61,14 +68,10 @@ int main(int argc, char** argv) {
         return 2;
     }
 
-    // The command given. (CLI11's got_subcommand(name) throws for a command
-    // that was not set up, which all but the named one are.)
-    const auto got = [&app](const char* name) {
-        for (const CLI::App* sub : app.get_subcommands()) {
-            if (sub->get_name() == name) return true;
-        }
-        return false;
-    };
+    // The command given (CLI11's got_subcommand(name) throws for a command
+    // that was not set up, which all but the named one are).
+    const std::string given = app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name();
+    const auto got = [&given](const char* name) { return given == name; };
     // render and sheet stop cleanly on Ctrl-C; batch keeps the default (its
     // supervisor and workers end, and a re-run resumes from the log).
     if (got("render") || got("sheet")) catch_interrupts();
