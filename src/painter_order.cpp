@@ -90,8 +90,8 @@ void order_ties(PaintRecord* data, std::size_t n, const TieRank& tie_rank) {
 
 /// Set-up's records, chunk after chunk, in mesh order.
 struct SetupRecords {
-    const std::vector<std::vector<DrawSpan>>& chunk_drawn;
-    const std::vector<std::vector<std::uint64_t>>& chunk_keys;
+    const std::vector<ChunkVector<DrawSpan>>& chunk_drawn;
+    const std::vector<ChunkVector<std::uint64_t>>& chunk_keys;
     std::size_t chunks;
 
     std::size_t groups() const { return (chunks + kGroupChunks - 1) / kGroupChunks; }
@@ -208,8 +208,8 @@ void sort_buckets(const Digit& digit, PainterOrderMemory& memory, ProgressMonito
 
 }  // namespace
 
-void painter_order(const std::vector<std::vector<DrawSpan>>& chunk_drawn,
-                   const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
+void painter_order(const std::vector<ChunkVector<DrawSpan>>& chunk_drawn,
+                   const std::vector<ChunkVector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
                    PainterOrderMemory& memory, ProgressMonitor& progress, const TieRank& tie_rank) {
     const SetupRecords records{chunk_drawn, chunk_keys, chunks};
     if (!sort) {
@@ -227,8 +227,8 @@ void painter_order(const std::vector<std::vector<DrawSpan>>& chunk_drawn,
 std::vector<std::uint32_t> farthest_first_order(const std::vector<double>& depth) {
     constexpr std::size_t kChunk = 4096;  // as set-up's chunks, so that ties cross chunks and groups
     const std::size_t chunks = (depth.size() + kChunk - 1) / kChunk;
-    std::vector<std::vector<DrawSpan>> chunk_drawn(chunks);
-    std::vector<std::vector<std::uint64_t>> chunk_keys(chunks);
+    std::vector<ChunkVector<DrawSpan>> chunk_drawn(chunks);
+    std::vector<ChunkVector<std::uint64_t>> chunk_keys(chunks);
     for (std::size_t i = 0; i < depth.size(); ++i) {
         chunk_drawn[i / kChunk].push_back(DrawSpan::one(i / kChunk, i % kChunk, 0, 0));
         chunk_keys[i / kChunk].push_back(farthest_first_key(depth[i]));

@@ -20,6 +20,7 @@
 #include <functional>
 #include <vector>
 
+#include "chunk_arena.hpp"
 #include "draw_span.hpp"
 #include "phongrast/mesh.hpp"
 #include "progress_monitor.hpp"
@@ -77,8 +78,8 @@ using TieRank = std::function<std::uint32_t(const DrawSpan&)>;
 /// leaving them out changes no draw's place relative to another's. With
 /// `sort` false (the order cannot change the picture) they stay in mesh
 /// order. Reports progress through `progress`.
-void painter_order(const std::vector<std::vector<DrawSpan>>& chunk_drawn,
-                   const std::vector<std::vector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
+void painter_order(const std::vector<ChunkVector<DrawSpan>>& chunk_drawn,
+                   const std::vector<ChunkVector<std::uint64_t>>& chunk_keys, std::size_t chunks, bool sort,
                    PainterOrderMemory& memory, ProgressMonitor& progress, const TieRank& tie_rank = nullptr);
 
 /// The indices 0..n-1 of `depth` ordered as painter_order() orders

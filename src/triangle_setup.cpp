@@ -37,7 +37,7 @@ struct PiecesOutcome {
 template <typename Real>
 class TriangleSetup {
 public:
-    TriangleSetup(const SetupInput<Real>& input, std::vector<FillTriangle<Real>>& out,
+    TriangleSetup(const SetupInput<Real>& input, ChunkVector<FillTriangle<Real>>& out,
                   ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors)
         : in_(input), vertices_(input.vertices), out_(out), clip_vertices_(clip_vertices), counts_(counts),
           vectors_(vectors), same_lit_(same_lit_everywhere()),
@@ -383,7 +383,7 @@ private:
     std::uint32_t surface_ = 0; ///< its material (index into SetupInput::surface_shaders)
     const SetupInput<Real>& in_;
     const TransformedVertices<Real>& vertices_;
-    std::vector<FillTriangle<Real>>& out_;
+    ChunkVector<FillTriangle<Real>>& out_;
     ClipVertexStore<Real>& clip_vertices_;
     SetupCounts& counts_;
     LightVectorsAt<Real>& vectors_;
@@ -395,8 +395,8 @@ private:
 
 /// Records where the draws of the triangle just set up are, and its painter's-order key.
 template <typename Real>
-void record_drawn(const std::vector<FillTriangle<Real>>& out, std::size_t first, std::size_t chunk,
-                  std::uint64_t key, std::vector<DrawSpan>& drawn, std::vector<std::uint64_t>& keys) {
+void record_drawn(const ChunkVector<FillTriangle<Real>>& out, std::size_t first, std::size_t chunk,
+                  std::uint64_t key, ChunkVector<DrawSpan>& drawn, ChunkVector<std::uint64_t>& keys) {
     const std::size_t count = out.size() - first;
     // Bands fit 16 bits: images are at most kMaxSampleSide = 2^19 samples high.
     drawn.push_back(count == 1 ? DrawSpan::one(chunk, first, out[first].coverage.row_min / kBandRows,
@@ -419,7 +419,7 @@ void add_counts(const SetupCounts& counts, RenderStats& stats) {
 }  // namespace
 
 template <typename Real>
-void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::vector<FillTriangle<Real>>& out,
+void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, ChunkVector<FillTriangle<Real>>& out,
                      ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors) {
     TriangleSetup<Real>(input, out, clip_vertices, counts, vectors).run(source);
 }
@@ -430,7 +430,7 @@ void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::v
 template <typename T>
 class RecordPages {
 public:
-    void map_ahead(std::vector<T>& records) {
+    void map_ahead(ChunkVector<T>& records) {
         if (records.data() != base_) {  // new storage (first call, or grown past its reservation)
             base_ = records.data();
             mapped_ = records.size();
@@ -449,44 +449,66 @@ private:
     std::size_t mapped_ = 0;
 };
 
+/// New chunk vectors for `chunks` chunks (more than the list has): in one
+/// huge-page arena when the frame is small enough (chunk_arena.hpp), else
+/// on the heap as any vector. The old vectors go first: they may hold slots.
+template <typename Real>
+void make_chunk_vectors(DrawList<Real>& draws, std::size_t chunks) {
+    draws.chunk_draws.clear();
+    draws.chunk_drawn.clear();
+    draws.chunk_keys.clear();
+    draws.arena.reset(chunks, {kSetupChunk * sizeof(FillTriangle<Real>), kSetupChunk * sizeof(DrawSpan),
+                               kSetupChunk * sizeof(std::uint64_t)});
+    draws.chunk_draws.reserve(chunks);
+    draws.chunk_drawn.reserve(chunks);
+    draws.chunk_keys.reserve(chunks);
+    for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+        draws.chunk_draws.emplace_back(SlotAllocator<FillTriangle<Real>>(draws.arena.slot(chunk, 0)));
+        draws.chunk_drawn.emplace_back(SlotAllocator<DrawSpan>(draws.arena.slot(chunk, 1)));
+        draws.chunk_keys.emplace_back(SlotAllocator<std::uint64_t>(draws.arena.slot(chunk, 2)));
+    }
+}
+
 template <typename Real>
 void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, RenderStats& stats,
                       ProgressMonitor& progress) {
     const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
     const std::size_t chunks = (triangles.size() + kSetupChunk - 1) / kSetupChunk;
-    if (draws.chunk_draws.size() < chunks) draws.chunk_draws.resize(chunks);
-    if (draws.chunk_drawn.size() < chunks) draws.chunk_drawn.resize(chunks);
-    if (draws.chunk_keys.size() < chunks) draws.chunk_keys.resize(chunks);
+    if (draws.chunk_draws.size() < chunks) make_chunk_vectors(draws, chunks);
     if (draws.chunk_clip_vertices.size() < chunks) draws.chunk_clip_vertices.resize(chunks);
     if (draws.chunk_vectors.size() < chunks) draws.chunk_vectors.resize(chunks);
     draws.chunk_counts.assign(chunks, SetupCounts{});
     draws.chunks = chunks;
     const std::vector<ScreenVertex>& screen = input.vertices.screen;
+    const bool mapped = draws.arena.mapped();  // the slots' pages are mapped already (huge pages)
     progress.begin_stage(0.1, 0.35, chunks);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
         if (progress.cancelled()) return;
         const std::size_t begin = chunk * kSetupChunk;
         const std::size_t end = std::min(triangles.size(), begin + kSetupChunk);
-        std::vector<FillTriangle<Real>>& out = draws.chunk_draws[chunk];
-        std::vector<DrawSpan>& drawn = draws.chunk_drawn[chunk];
-        std::vector<std::uint64_t>& keys = draws.chunk_keys[chunk];
+        ChunkVector<FillTriangle<Real>>& out = draws.chunk_draws[chunk];
+        ChunkVector<DrawSpan>& drawn = draws.chunk_drawn[chunk];
+        ChunkVector<std::uint64_t>& keys = draws.chunk_keys[chunk];
         // Room for every triangle of the chunk, its pages mapped a step
         // ahead of the writes (RecordPages) rather than all at once:
         // triangles that cover no sample, lie outside the view or are culled
         // leave their records unwritten (a fifth of the 8M-triangle mesh's),
         // and mapping those would add to the peak memory.
+        // In the arena, the whole slot at once: a later frame's larger last
+        // chunk must not outgrow it onto the heap.
+        const std::size_t room = mapped ? kSetupChunk : end - begin;
         out.clear();
-        out.reserve(end - begin);
+        out.reserve(room);
         drawn.clear();
-        drawn.reserve(end - begin);
+        drawn.reserve(room);
         keys.clear();
-        keys.reserve(end - begin);
+        keys.reserve(room);
         draws.chunk_clip_vertices[chunk].clear();
         TriangleSetup<Real> setup(input, out, draws.chunk_clip_vertices[chunk], draws.chunk_counts[chunk],
                                   draws.chunk_vectors[chunk]);
         RecordPages<FillTriangle<Real>> pages;
         for (std::size_t t = begin; t < end; ++t) {
-            pages.map_ahead(out);
+            if (!mapped) pages.map_ahead(out);
             const std::size_t first = out.size();
             setup.run(static_cast<std::uint32_t>(t));
             if (out.size() == first) continue;
@@ -505,7 +527,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
 #define PHONGRAST_INSTANTIATE_SETUP(Real)                                                                       \
     template void set_up_triangles<Real>(const SetupInput<Real>&, DrawList<Real>&, RenderStats&,                \
                                          ProgressMonitor&);                                                     \
-    template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, std::vector<FillTriangle<Real>>&, \
+    template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, ChunkVector<FillTriangle<Real>>&, \
                                         ClipVertexStore<Real>&, SetupCounts&, LightVectorsAt<Real>&);
 PHONGRAST_INSTANTIATE_SETUP(float)
 PHONGRAST_INSTANTIATE_SETUP(double)

@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "chunk_arena.hpp"
 #include "closed_mesh.hpp"
 #include "draw_span.hpp"
 #include "fill_types.hpp"
@@ -50,13 +51,15 @@ struct SetupCounts {
 /// triangles, each chunk's draws in mesh order, and for each triangle that
 /// draws something its painter's-order key and where its draws are.
 /// Fixed-size chunks make the list the same whatever the number of threads.
-/// Kept from frame to frame.
+/// Kept from frame to frame. A small frame's chunk vectors live in `arena`
+/// (chunk_arena.hpp: huge pages), a large frame's on the heap.
 template <typename Real>
 struct DrawList {
     std::size_t chunks = 0;  ///< chunks of this frame (the vectors may hold more from earlier frames)
-    std::vector<std::vector<FillTriangle<Real>>> chunk_draws;
-    std::vector<std::vector<DrawSpan>> chunk_drawn;
-    std::vector<std::vector<std::uint64_t>> chunk_keys;  ///< farthest_first_key() of each drawn triangle's mean z_c
+    ChunkArena arena;        ///< before the vectors: they give their slots back before it goes
+    std::vector<ChunkVector<FillTriangle<Real>>> chunk_draws;
+    std::vector<ChunkVector<DrawSpan>> chunk_drawn;
+    std::vector<ChunkVector<std::uint64_t>> chunk_keys;  ///< farthest_first_key() of each drawn triangle's mean z_c
     std::vector<ClipVertexStore<Real>> chunk_clip_vertices;
     std::vector<SetupCounts> chunk_counts;
     std::vector<LightVectorsAt<Real>> chunk_vectors;  ///< per chunk, not per thread (see light_vertices())
@@ -103,7 +106,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
 /// Sets up mesh triangle `source`: appends its fill triangles (none, one, or
 /// one per piece of its clipped polygon) to `out` and counts it in `counts`.
 template <typename Real>
-void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::vector<FillTriangle<Real>>& out,
+void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, ChunkVector<FillTriangle<Real>>& out,
                      ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors);
 
 }  // namespace phongrast::detail
