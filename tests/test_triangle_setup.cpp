@@ -17,7 +17,7 @@ namespace {
 struct SetUpOne {
     phongrast::Scene scene;
     phongrast::RenderOptions options = phongrast::RenderOptions::exact();
-    std::vector<pd::FillTriangle<float>> draws;
+    pd::ChunkVector<pd::FillTriangle<float>> draws;
     pd::SetupCounts counts;
     pd::TransformedVertices<float> vertices;
 
