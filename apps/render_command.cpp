@@ -13,6 +13,7 @@
 #include "phongrast/io/text_file.hpp"
 #include "report.hpp"
 #include "scene_setup.hpp"
+#include "thread_pool_warm_up.hpp"
 
 namespace phongrast::cli {
 namespace {
@@ -53,6 +54,7 @@ void add_render_command(CLI::App& app, RenderCommand& command) {
 }
 
 int run_render(const RenderCommand& command) {
+    const ThreadPoolWarmUp warm_up(command.scene.threads);  // while the scene is read
     const Messages messages(command.scene.quiet);
     PreparedScene prepared = prepare_scene(command.scene, messages);
     // Extra outputs only fit an EXR: without -o they go to NAME.exr.
@@ -117,7 +119,9 @@ int run_render(const RenderCommand& command) {
     Renderer renderer(prepared.options);
     if (timing.warm_up) {
         messages.progress(0, runs, "warm-up");
+        const Clock::time_point start = Clock::now();
         renderer.render(prepared.scene);
+        timing.warm_up_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     }
     const RenderResult* last = nullptr;
     for (int run = 0; run < runs; ++run) {

@@ -74,6 +74,7 @@ std::string stats_json(const Timing& timing, const RenderStats& stats, const Sce
     document["render_seconds"] = {
         {"median", timing.median()}, {"min", timing.min()}, {"max", timing.max()},
         {"runs", timing.seconds},    {"warm_up", timing.warm_up}};
+    if (timing.warm_up_seconds >= 0.0) document["render_seconds"]["first"] = timing.warm_up_seconds;
     if (timing.load_seconds >= 0.0) document["load_seconds"] = timing.load_seconds;
     std::size_t triangles = scene.mesh.triangles.size();
     std::size_t vertices = scene.mesh.positions.size();

@@ -36,6 +36,7 @@ std::string summary_line(const RenderStats& stats, double seconds, double load_s
 struct Timing {
     std::vector<double> seconds;  ///< one per timed run, in order
     bool warm_up = false;
+    double warm_up_seconds = -1.0;  ///< the warm-up render (a Renderer's first frame); < 0: none
     double load_seconds = -1.0;  ///< reading the mesh file; < 0: not measured
     double median() const;
     double min() const;

@@ -13,6 +13,7 @@
 #include "phongrast/io/image_file.hpp"
 #include "report.hpp"
 #include "scene_setup.hpp"
+#include "thread_pool_warm_up.hpp"
 
 namespace phongrast::cli {
 
@@ -31,6 +32,7 @@ void add_thumbnail_command(CLI::App& app, ThumbnailCommand& command) {
 }
 
 int run_thumbnail(const ThumbnailCommand& command) {
+    const ThreadPoolWarmUp warm_up(0);  // while the mesh is read
     const Messages quiet(true);
     SceneFlags flags;
     flags.input = command.input;

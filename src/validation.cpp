@@ -25,6 +25,12 @@ namespace {
 template <typename Bad>
 std::size_t first_bad(std::size_t n, const Bad& bad) {
     constexpr std::size_t kBlock = 65536;
+    if (n <= kBlock) {  // one block: the same loop without a task (nor oneTBB's start-up for a small mesh)
+        for (std::size_t i = 0; i < n; ++i) {
+            if (bad(i)) return i;
+        }
+        return n;
+    }
     return tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, n, kBlock), n,
         [&](const tbb::blocked_range<std::size_t>& range, std::size_t found) {
