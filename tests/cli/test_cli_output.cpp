@@ -125,6 +125,18 @@ TEST_CASE("options repeat K and stats-json report K timed runs and the render st
     CHECK(stats["scene"]["width"] == 8);
     CHECK(stats["load_seconds"].get<double>() >= 0.0);
     CHECK(stats["load_seconds"].get<double>() < 60.0);
+    // The warm-up is the Renderer's first frame: timed, and reported apart from the runs.
+    REQUIRE(stats["render_seconds"].contains("first"));
+    CHECK(stats["render_seconds"]["first"].get<double>() > 0.0);
+    CHECK(stats["render_seconds"]["first"].get<double>() < 60.0);
+
+    // Without --repeat the one run is the first frame: no warm-up to report.
+    const Run once = run_cli(folder, "render '" + data_folder + "/triangle.json' --stats-json once.json -o once.png");
+    REQUIRE(once.status == 0);
+    const nlohmann::json once_stats = nlohmann::json::parse(read_text(folder.file("once.json")));
+    CHECK(once_stats["render_seconds"]["warm_up"] == false);
+    CHECK_FALSE(once_stats["render_seconds"].contains("first"));
+    CHECK(once_stats["render_seconds"]["runs"].size() == 1);
 }
 
 TEST_CASE("a scene naming a PLY mesh, and a GLB given alone, render as their OBJ twin does") {
