@@ -9,6 +9,7 @@ The build configures this checkout with CMake (Release; the library, the I/O
 library and the Python module only, for the interpreter running pip) and
 copies the module and its type stubs into the wheel:
   phongrast.<abi>.so          the module
+  phongrast_openexr.so, phongrast_openimageio.so  the modules it loads on first use
   phongrast.pyi               stubs next to the module (IDEs, pyright)
   phongrast-stubs/__init__.pyi  the same stubs as a PEP 561 stub package (mypy)
 
@@ -66,6 +67,11 @@ class CMakeBuild(build_ext):
         target = pathlib.Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[0], target)
+        # The modules phongrast_io loads on first use (EXR files, other image
+        # formats), found next to the extension module.
+        for module in ("phongrast_openexr.so", "phongrast_openimageio.so"):
+            if (build / "lib" / "phongrast" / module).exists():
+                shutil.copyfile(build / "lib" / "phongrast" / module, target.parent / module)
         stubs = SOURCE / "src" / "python" / "phongrast.pyi"
         shutil.copyfile(stubs, target.parent / "phongrast.pyi")
         stub_package = target.parent / "phongrast-stubs"

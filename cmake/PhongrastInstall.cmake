@@ -7,6 +7,7 @@
 #   <prefix>/lib/libphongrast.a            and libphongrast_io.a when built
 #   <prefix>/bin/phongrast                 the command-line program when built
 #   <prefix>/lib/phongrast/phongrast_openimageio.so   OpenImageIO, loaded on first use (with the I/O library)
+#   <prefix>/lib/phongrast/phongrast_openexr.so       OpenEXR, loaded on the first EXR read or write (likewise)
 #   <prefix>/share/thumbnailers/phongrast.thumbnailer the desktop thumbnailer (with the program)
 #   <prefix>/share/mime/packages/phongrast-mesh-mime.xml  the PLY MIME type Debian 12 lacks
 #   <prefix>/share/phongrast/              the example assets/ when present
@@ -61,6 +62,11 @@ install(FILES "${PROJECT_BINARY_DIR}/include/phongrast/version.hpp"
 # found next to the program or library holding phongrast::io, or here.
 if(TARGET phongrast_openimageio)
   install(TARGETS phongrast_openimageio
+    LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}/phongrast" COMPONENT phongrast_runtime)
+endif()
+# The OpenEXR module (src/io/openexr_module.hpp), likewise.
+if(TARGET phongrast_openexr)
+  install(TARGETS phongrast_openexr
     LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}/phongrast" COMPONENT phongrast_runtime)
 endif()
 

@@ -12,7 +12,9 @@
 // huge pages when they share a mapping: a ChunkArena gives each chunk's
 // vectors a fixed slot in one 2 MiB-aligned mapping advised MADV_HUGEPAGE
 // (transparent huge pages in `madvise` mode, the default of many
-// distributions) and mapped at once.
+// distributions). Measured with a test program on this machine, writing
+// 14 MiB of fresh memory took 1.4 ms on huge pages against 4.5 ms to map
+// 4 KiB pages with MADV_POPULATE_WRITE plus 18 ms for the first writes.
 //
 // Only for small frames (kHugePageArenaBytes): a slot's unwritten tail
 // (triangles culled or covering no sample) is then resident too, which a
@@ -100,14 +102,14 @@ public:
     ~ChunkArena() { release(); }
 
     /// Slots for `chunks` chunks of bytes[k] bytes of each kind k: one
-    /// mapping, advised MADV_HUGEPAGE and mapped for writing at once, when
-    /// they fit kHugePageArenaBytes; slots with no memory (heap vectors)
-    /// otherwise. Every vector using the old slots must be gone.
+    /// mapping, advised MADV_HUGEPAGE, when they fit kHugePageArenaBytes;
+    /// slots with no memory (heap vectors) otherwise. Every vector using the
+    /// old slots must be gone.
     void reset(std::size_t chunks, const std::array<std::size_t, kKinds>& bytes);
 
     ArenaSlot* slot(std::size_t chunk, std::size_t kind) { return &slots_[chunk * kKinds + kind]; }
     std::size_t chunks() const { return slots_.size() / kKinds; }
-    /// Whether the slots have memory of the arena's (already mapped: no map-ahead needed).
+    /// Whether the slots have memory of the arena's (huge pages: no map-ahead).
     bool mapped() const { return base_ != nullptr; }
 
 private:

@@ -480,7 +480,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
     draws.chunk_counts.assign(chunks, SetupCounts{});
     draws.chunks = chunks;
     const std::vector<ScreenVertex>& screen = input.vertices.screen;
-    const bool mapped = draws.arena.mapped();  // the slots' pages are mapped already (huge pages)
+    const bool mapped = draws.arena.mapped();  // huge pages: no 4 KiB map-ahead
     progress.begin_stage(0.1, 0.35, chunks);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
         if (progress.cancelled()) return;

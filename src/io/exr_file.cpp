@@ -1,69 +1,68 @@
+// EXR reading and writing through phongrast_openexr.so, loaded on the first
+// use (openexr_module.hpp says why OpenEXR is not linked).
 #include "exr_file.hpp"
 
 #include <algorithm>
-#include <exception>
+#include <mutex>
 
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfInputFile.h>
-#include <OpenEXR/ImfOutputFile.h>
-
+#include "module_loader.hpp"
+#include "openexr_module.hpp"
 #include "phongrast/io/error.hpp"
 
 namespace phongrast::io::detail {
 namespace {
 
-Imf::PixelType pixel_type(const ExrChannel& channel) {
-    return channel.unsigned_int ? Imf::UINT : Imf::FLOAT;
+/// The module, loaded on the first call; `path`: the file that needs it, for the message.
+const PhongrastOpenExrModule& openexr(const std::string& path) {
+    static std::once_flag once;
+    static LoadedModule loaded;
+    std::call_once(once, [] {
+        loaded = load_module({kOpenExrModuleFile, "PHONGRAST_OPENEXR_MODULE", PHONGRAST_BUILD_TREE_OPENEXR_MODULE,
+                              "phongrast_openexr_module", kPhongrastOpenExrModuleVersion, "OpenEXR"});
+    });
+    if (!loaded.table) throw FileError(path + ": EXR needs OpenEXR: " + loaded.failure);
+    return *static_cast<const PhongrastOpenExrModule*>(loaded.table);
 }
 
-/// The frame buffer of `channels` for a data window starting at (x0, y0).
-Imf::FrameBuffer frame_buffer(const std::vector<ExrChannel>& channels, int columns, int x0, int y0) {
-    Imf::FrameBuffer buffer;
+std::vector<PhongrastExrChannel> c_channels(const std::vector<ExrChannel>& channels) {
+    std::vector<PhongrastExrChannel> out;
+    out.reserve(channels.size());
     for (const ExrChannel& channel : channels) {
-        const std::size_t row_stride = channel.stride * static_cast<std::size_t>(columns);
-        // OpenEXR addresses pixel (x, y) as base + x * xStride + y * yStride.
-        char* origin = channel.base - static_cast<std::ptrdiff_t>(x0) * static_cast<std::ptrdiff_t>(channel.stride) -
-                       static_cast<std::ptrdiff_t>(y0) * static_cast<std::ptrdiff_t>(row_stride);
-        buffer.insert(channel.name, Imf::Slice(pixel_type(channel), origin, channel.stride, row_stride));
+        out.push_back({channel.name.c_str(), channel.unsigned_int ? 1 : 0, channel.base, channel.stride});
     }
-    return buffer;
+    return out;
 }
+
+constexpr std::size_t kErrorSize = 1024;
 
 }  // namespace
 
 void write_exr(const std::string& file, const std::string& path, int columns, int rows,
                const std::vector<ExrChannel>& channels) {
-    try {
-        Imf::Header header(columns, rows);
-        header.compression() = Imf::ZIP_COMPRESSION;
-        for (const ExrChannel& channel : channels) header.channels().insert(channel.name, Imf::Channel(pixel_type(channel)));
-        Imf::OutputFile output(file.c_str(), header);
-        output.setFrameBuffer(frame_buffer(channels, columns, 0, 0));
-        output.writePixels(rows);
-    } catch (const std::exception& error) {
-        throw FileError(path + ": write failed: " + error.what());
+    const PhongrastOpenExrModule& module = openexr(path);
+    const std::vector<PhongrastExrChannel> table = c_channels(channels);
+    char error[kErrorSize] = {};
+    if (module.write(file.c_str(), columns, rows, table.data(), table.size(), error, sizeof error) != 0) {
+        throw FileError(path + ": write failed: " + error);
     }
 }
 
 struct ExrReader::File {
-    explicit File(const std::string& path) : input(path.c_str()) {}
-    Imf::InputFile input;
+    const PhongrastOpenExrModule* module = nullptr;
+    void* handle = nullptr;
+    ~File() {
+        if (handle != nullptr) module->close(handle);
+    }
 };
 
 ExrReader::ExrReader(const std::string& path) : path_(path) {
-    try {
-        file_ = std::make_unique<File>(path);
-        const Imath::Box2i window = file_->input.header().dataWindow();
-        columns_ = window.max.x - window.min.x + 1;
-        rows_ = window.max.y - window.min.y + 1;
-        for (auto it = file_->input.header().channels().begin(); it != file_->input.header().channels().end(); ++it) {
-            names_.push_back(it.name());
-        }
-    } catch (const std::exception& error) {
-        throw FileError(path + ": cannot read image: " + error.what());
-    }
+    file_ = std::make_unique<File>();
+    file_->module = &openexr(path);
+    char error[kErrorSize] = {};
+    file_->handle = file_->module->open(path.c_str(), &columns_, &rows_, error, sizeof error);
+    if (file_->handle == nullptr) throw FileError(path + ": cannot read image: " + error);
+    const std::size_t count = file_->module->channel_count(file_->handle);
+    for (std::size_t i = 0; i < count; ++i) names_.emplace_back(file_->module->channel_name(file_->handle, i));
     if (columns_ < 1 || rows_ < 1 || columns_ > 32768 || rows_ > 32768) {
         throw FileError(path + ": EXR of " + std::to_string(columns_) + "x" + std::to_string(rows_) +
                         " pixels; expected 1 to 32768 per side");
@@ -77,12 +76,10 @@ bool ExrReader::has(const std::string& name) const {
 }
 
 void ExrReader::read(const std::vector<ExrChannel>& channels) {
-    try {
-        const Imath::Box2i window = file_->input.header().dataWindow();
-        file_->input.setFrameBuffer(frame_buffer(channels, columns_, window.min.x, window.min.y));
-        file_->input.readPixels(window.min.y, window.max.y);
-    } catch (const std::exception& error) {
-        throw FileError(path_ + ": cannot read image: " + error.what());
+    const std::vector<PhongrastExrChannel> table = c_channels(channels);
+    char error[kErrorSize] = {};
+    if (file_->module->read(file_->handle, table.data(), table.size(), error, sizeof error) != 0) {
+        throw FileError(path_ + ": cannot read image: " + error);
     }
 }
 
