@@ -13,7 +13,6 @@
 #include "phongrast/io/text_file.hpp"
 #include "report.hpp"
 #include "scene_setup.hpp"
-#include "thread_pool_warm_up.hpp"
 
 namespace phongrast::cli {
 namespace {
@@ -54,7 +53,6 @@ void add_render_command(CLI::App& app, RenderCommand& command) {
 }
 
 int run_render(const RenderCommand& command) {
-    const ThreadPoolWarmUp warm_up(command.scene.threads);  // while the scene is read
     const Messages messages(command.scene.quiet);
     PreparedScene prepared = prepare_scene(command.scene, messages);
     // Extra outputs only fit an EXR: without -o they go to NAME.exr.

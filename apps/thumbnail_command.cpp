@@ -13,7 +13,6 @@
 #include "phongrast/io/image_file.hpp"
 #include "report.hpp"
 #include "scene_setup.hpp"
-#include "thread_pool_warm_up.hpp"
 
 namespace phongrast::cli {
 
@@ -32,7 +31,6 @@ void add_thumbnail_command(CLI::App& app, ThumbnailCommand& command) {
 }
 
 int run_thumbnail(const ThumbnailCommand& command) {
-    const ThreadPoolWarmUp warm_up(0);  // while the mesh is read
     const Messages quiet(true);
     SceneFlags flags;
     flags.input = command.input;
