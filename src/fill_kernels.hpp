@@ -186,9 +186,10 @@ struct NoLanes {};
 /// perspective-correct: the same operations in the same order, lane by
 /// lane), then shade_lanes(n, w, out), then the pixels are written as
 /// fill_samples() writes them. All lanes finite (the case that should always
-/// hold) is checked in a vector loop first.
+/// hold) is checked in a vector loop first. Out of line, so that the
+/// sample-by-sample loop of the short spans keeps its registers.
 template <typename Real, bool Perspective, typename ShadeLanes>
-PHONGRAST_FILL_INLINE void fill_span_lanes(const Real* q, const Real* dq, int count, glm::vec3* pixels,
+PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count, glm::vec3* pixels,
                                            std::uint64_t& replaced, ShadeLanes& shade_lanes) {
     Lanes<Real> w[3], out[3];
     for (int start = 0; start < count; start += kSampleBatch) {
