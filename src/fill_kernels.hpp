@@ -169,13 +169,77 @@ PHONGRAST_FILL_INLINE glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_
     return pixel;
 }
 
+/// Spans at least this long, painted whole (no owner buffer to skip samples
+/// by, no depth test), are shaded kSampleBatch samples at a time in vector
+/// loops (fill_span_lanes()); shorter spans, most spans of a mesh of small
+/// triangles, go sample by sample, which sets up less. Both write the same
+/// bits, so this is a choice of speed only.
+constexpr int kMinLanesSpan = 8;
+
+/// fill_samples()' shade_lanes for a kernel that shades every span sample by
+/// sample: flat, whose one colour costs a store per sample (the batches'
+/// weights would cost more than they save; measured on the teapot).
+struct NoLanes {};
+
+/// Shades `count` samples of one span, starting at `pixels`, in batches:
+/// the weights of sample k are fill_samples()'s (q + dq k, renormalised when
+/// perspective-correct: the same operations in the same order, lane by
+/// lane), then shade_lanes(n, w, out), then the pixels are written as
+/// fill_samples() writes them. All lanes finite (the case that should always
+/// hold) is checked in a vector loop first. Out of line, so that the
+/// sample-by-sample loop of the short spans keeps its registers.
+template <typename Real, bool Perspective, typename ShadeLanes>
+PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count, glm::vec3* pixels,
+                                           std::uint64_t& replaced, ShadeLanes& shade_lanes) {
+    Lanes<Real> w[3], out[3];
+    for (int start = 0; start < count; start += kSampleBatch) {
+        const int n = std::min(kSampleBatch, count - start);
+        for (int l = 0; l < n; ++l) {
+            const Real step_count = static_cast<Real>(start + l);
+            w[0][l] = q[0] + dq[0] * step_count;
+            w[1][l] = q[1] + dq[1] * step_count;
+            w[2][l] = q[2] + dq[2] * step_count;
+        }
+        if constexpr (Perspective) {
+            for (int l = 0; l < n; ++l) {
+                const Real depth = Real(1) / (w[0][l] + w[1][l] + w[2][l]);
+                w[0][l] *= depth;
+                w[1][l] *= depth;
+                w[2][l] *= depth;
+            }
+        }
+        shade_lanes(n, static_cast<const Lanes<Real>*>(w), out);
+        float channel[3][kSampleBatch];
+        int nonfinite = 0;
+        for (int l = 0; l < n; ++l) {
+            channel[0][l] = static_cast<float>(out[0][l]);
+            channel[1][l] = static_cast<float>(out[1][l]);
+            channel[2][l] = static_cast<float>(out[2][l]);
+            // std::isfinite(sum), as finite_or_replaced() asks, written as a compare that vectorises.
+            const float sum = channel[0][l] + channel[1][l] + channel[2][l];
+            nonfinite |= !(std::abs(sum) <= std::numeric_limits<float>::max());
+        }
+        glm::vec3* batch_pixels = pixels + start;
+        if (nonfinite == 0) {
+            for (int l = 0; l < n; ++l) batch_pixels[l] = glm::vec3(channel[0][l], channel[1][l], channel[2][l]);
+        } else {
+            for (int l = 0; l < n; ++l) {
+                batch_pixels[l] =
+                    finite_or_replaced(glm::vec3(channel[0][l], channel[1][l], channel[2][l]), replaced);
+            }
+        }
+    }
+}
+
 /// Visits the triangle's covered samples in the target's rows with
 /// interpolation weights w (summing to 1 up to rounding) and writes shade(w)
 /// there. Each span starts from weights derived from exact edge values and
-/// steps them by a constant per column.
-template <typename Real, bool Perspective, typename Shade>
-PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarget<Real>& target,
-                                        Shade&& shade) {
+/// steps them by a constant per column. Long spans painted whole go through
+/// shade_lanes(n, w, out) instead (fill_span_lanes()), which must give lane
+/// for lane what shade(w) gives.
+template <typename Real, bool Perspective, typename Shade, typename ShadeLanes>
+PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarget<Real>& target, Shade&& shade,
+                                        ShadeLanes&& shade_lanes) {
     Image& image = target.image;
     for_each_weighted_span<Real, Perspective>(
         draw, target,
@@ -183,6 +247,14 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns);
         const std::uint32_t* owners = owner_row(target, row);
         target.covered += static_cast<std::uint64_t>(count);
+        if constexpr (!std::is_same_v<std::decay_t<ShadeLanes>, NoLanes>) {
+            if (owners == nullptr && !target.depth_test && count >= kMinLanesSpan) {
+                glm::vec3* pixels = &image.pixels[row_start + static_cast<std::size_t>(first_column)];
+                fill_span_lanes<Real, Perspective>(q, dq, count, pixels, target.replaced, shade_lanes);
+                target.samples += static_cast<std::uint64_t>(count);
+                return;
+            }
+        }
         std::uint64_t written = 0;
         for (int k = 0; k < count; ++k) {
             // Painted over later: skipped. The weights below depend on k only, not on what was skipped.
@@ -207,11 +279,22 @@ Vec3<Real> interpolate_lit(const FillTriangle<Real>& d, const Real* w) {
     return w[0] * d.lit[0] + w[1] * d.lit[1] + w[2] * d.lit[2];
 }
 
+/// interpolate_lit() for a batch: lane by lane the same products and sums
+/// ((w0 a + w1 b) + w2 c per channel).
+template <typename Real>
+PHONGRAST_FILL_INLINE void interpolate_lit_lanes(const FillTriangle<Real>& d, int n, const Lanes<Real>* w,
+                                                 Lanes<Real>* out) {
+    for (int c = 0; c < 3; ++c) interpolate_lanes(n, w, d.lit[0][c], d.lit[1][c], d.lit[2][c], out[c]);
+}
+
+
 /// Gouraud: the colour was lit per vertex; interpolate it.
 template <typename Real, bool Perspective>
 void fill_lit(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
               const FillConstants<Real>&) {
-    fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
+    fill_samples<Real, Perspective>(
+        draw, target, [&](const Real* w) { return interpolate_lit(draw, w); },
+        [&](int n, const Lanes<Real>* w, Lanes<Real>* out) { interpolate_lit_lanes(draw, n, w, out); });
 }
 
 /// Flat: the triangle's one colour, written as is. (Interpolating it like
@@ -220,7 +303,7 @@ void fill_lit(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVec
 template <typename Real, bool Perspective>
 void fill_flat(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
                const FillConstants<Real>&) {
-    fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
+    fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; }, NoLanes{});
 }
 
 /// Visits the triangle's covered samples in the target's rows, gathering up
@@ -318,7 +401,9 @@ void fill_lit_textured(const FillTriangle<Real>& draw, FillTarget<Real>& target,
                        const FillConstants<Real>& constants) {
     const KernelTexture& texture = constants.textures[draw.surface];
     if (texture.texels == nullptr) {
-        fill_samples<Real, Perspective>(draw, target, [&](const Real* w) { return interpolate_lit(draw, w); });
+        fill_samples<Real, Perspective>(
+        draw, target, [&](const Real* w) { return interpolate_lit(draw, w); },
+        [&](int n, const Lanes<Real>* w, Lanes<Real>* out) { interpolate_lit_lanes(draw, n, w, out); });
         return;
     }
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
@@ -336,7 +421,7 @@ void fill_flat_textured(const FillTriangle<Real>& draw, FillTarget<Real>& target
                         const FillConstants<Real>& constants) {
     const KernelTexture& texture = constants.textures[draw.surface];
     if (texture.texels == nullptr) {
-        fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; });
+        fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; }, NoLanes{});
         return;
     }
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
@@ -368,8 +453,9 @@ void fill_phong(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightV
 
 /// Phong with neither diffuse nor specular needs no normal and no light: per
 /// sample it is the ambient term of the interpolated colour, which costs what
-/// Gouraud's interpolation costs. It goes sample by sample through
-/// fill_samples, skipping the batches' gathering, with shade_phong_batch's
+/// Gouraud's interpolation costs. It goes through fill_samples (long spans
+/// in vector loops, short ones sample by sample), skipping the batches'
+/// gathering, with shade_phong_batch's
 /// operations in the same order (0 + factor * colour, colour interpolated as
 /// (w0 a + w1 b) + w2 c), so the image is the general kernel's bit for bit.
 template <typename Real, bool Perspective, bool Ambient, bool UniformColor>
@@ -387,6 +473,19 @@ void fill_phong_unlit(const FillTriangle<Real>& draw, FillTarget<Real>& target, 
             }
         }
         return out;
+    }, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
+        for (int c = 0; c < 3; ++c) {
+            if constexpr (Ambient) {
+                if constexpr (UniformColor) {
+                    for (int l = 0; l < n; ++l) out[c][l] = Real(0) + factor[c] * constants.color[c];
+                } else {
+                    interpolate_lanes(n, w, draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], out[c]);
+                    for (int l = 0; l < n; ++l) out[c][l] = Real(0) + factor[c] * out[c][l];
+                }
+            } else {
+                for (int l = 0; l < n; ++l) out[c][l] = Real(0);
+            }
+        }
     });
 }
 
