@@ -240,6 +240,7 @@ void list_vertex_corners(const Mesh& mesh, MeshOrder& order, const std::function
     for (const Triangle& tri : mesh.triangles) {
         for (std::uint32_t index : tri) ++first[order.vertex_target[index] + 1];
     }
+    if (poll) poll();
     for (std::size_t v = 1; v <= vertices; ++v) first[v] += first[v - 1];
     resize_polling(corners, 3 * triangles, poll);
     // first[v] serves as v's cursor, ending at v + 1's start; then shifted back.
