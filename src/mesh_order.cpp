@@ -94,10 +94,8 @@ void copy_all_but_mesh(const Scene& from, Scene& to) {
     to.lighting = from.lighting;
 }
 
-/// The normals the pipeline would compute from the caller's mesh, when it
-/// would compute any: summed in the caller's triangle order, so the same bits.
-bool needs_computed_normals(const Scene& scene, const RenderOptions& options) {
-    if (!scene.mesh.normals.empty()) return false;
+/// Whether the pipeline reads normals (vertex_stage.cpp's need_normals).
+bool needs_normals(const Scene& scene, const RenderOptions& options) {
     return find_effects(scene).normals || !options.specialize_effects || options.aovs.normal;
 }
 
@@ -303,8 +301,23 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
         }
     });
     report();
-    if (needs_computed_normals(scene, options)) {
+    // The normals the pipeline would compute from the caller's mesh (all of
+    // them, or where a user normal is zero: "compute this one"), computed here
+    // with the caller's mesh's bits. The vertex stage then finds no zero
+    // normal to compute but where every order computes zero (a vertex whose
+    // faces all have zero length: the sums' order cannot matter).
+    const bool needed = needs_normals(scene, options);
+    if (needed && mesh.normals.empty()) {
         normals_in_caller_order(mesh, order, poll);
+    } else if (needed && has_zero_normal(mesh.normals)) {
+        normals_in_caller_order(mesh, order, poll);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.normals.size(), kGatherBlock),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                const glm::vec3& given = mesh.normals[order.vertex_source[v]];
+                if (given != glm::vec3(0.0f)) out.normals[v] = given;
+            }
+        });
     } else {
         gather(mesh.normals, order.vertex_source, out.normals, poll);
     }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <string>
@@ -40,9 +41,10 @@ private:
     bool previous_always_;
 };
 
-bool same_bits(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
+template <typename T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
     if (a.size() != b.size()) return false;
-    return a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec3)) == 0;
+    return a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
 struct AwkwardMesh {
@@ -60,6 +62,7 @@ AwkwardMesh awkward_mesh(unsigned seed, bool far_points = false) {
     AwkwardMesh out;
     Mesh& mesh = out.mesh;
     mesh = test_meshes::icosphere(60, 0.08);
+    mesh.colors.clear();
     std::mt19937 random(seed);
     std::shuffle(mesh.triangles.begin(), mesh.triangles.end(), random);
     std::vector<std::uint32_t> target(mesh.positions.size());
@@ -253,4 +256,67 @@ TEST_CASE("a cancel while the corner list is made leaves none taken for made") {
     CHECK(order.permutations_computed == 1);
     CHECK(order.vertex_corners_made);
     CHECK(same_bits(drawn.mesh.normals, expected_normals(scene.mesh, order)));
+}
+
+TEST_CASE("given normals with zeros (computed there) render the same bits reordered or not") {
+    // A zero user normal means "compute this one" (docs/robustness.md): the
+    // computed ones must have the caller's order's bits too. Zeroed: every
+    // tenth normal, and those whose bits change when summed in the copy's
+    // order (sums of faces whose components nearly cancel). The copy's
+    // normals are checked directly: these few bits seldom reach a pixel (the
+    // pictures below agreed before the copy computed them too).
+    AwkwardMesh awkward = awkward_mesh(6);
+    Scene scene = scene_of(awkward.mesh);
+    const std::vector<glm::vec3> computed = calculate_normals(scene.mesh);
+    std::vector<glm::vec3> given = computed;
+    std::size_t order_dependent = 0;
+    {
+        AlwaysReorder always;
+        detail::MeshOrder order;
+        const Mesh& copy = detail::scene_in_render_order(scene, normal_output(), false, order).mesh;
+        const std::vector<glm::vec3> copy_order = calculate_normals(copy);
+        for (std::size_t v = 0; v < given.size(); ++v) {
+            const bool differs = std::memcmp(&copy_order[order.vertex_target[v]], &computed[v], sizeof(glm::vec3)) != 0;
+            order_dependent += differs;
+            if (differs || v % 10 == 0) given[v] = glm::vec3(0.0f);
+        }
+    }
+    REQUIRE(order_dependent > 0);
+    scene.mesh.normals = given;
+    {
+        // The copy's normals: the given ones, and the caller's order's computed ones where they are zero.
+        AlwaysReorder always;
+        detail::MeshOrder order;
+        const Mesh& copy = detail::scene_in_render_order(scene, normal_output(), false, order).mesh;
+        std::vector<glm::vec3> expected(given.size());
+        for (std::size_t v = 0; v < given.size(); ++v) {
+            expected[order.vertex_target[v]] = given[v] != glm::vec3(0.0f) ? given[v] : computed[v];
+        }
+        CHECK(same_bits(copy.normals, expected));
+        CHECK(order.vertex_corners_made);
+    }
+    scene.image.rows = scene.image.columns = 256;
+    scene.camera.focal = 1.9;
+    for (const glm::dvec3& eye : {glm::dvec3(0.3, 0.4, 3.2), glm::dvec3(-0.3, -0.4, -3.2), glm::dvec3(3.0, 0.1, 0.2),
+                                  glm::dvec3(-3.0, 0.1, 0.2), glm::dvec3(0.1, 3.2, 0.0), glm::dvec3(0.1, -3.2, 0.0)}) {
+        scene.camera.eye = eye;
+        for (const Shader shader : {Shader::gouraud, Shader::phong}) {
+            scene.shader = shader;
+            const RenderOptions options = normal_output();
+            RenderResult today, reordered;
+            {
+                const std::size_t previous = detail::set_reorder_min_triangles(std::numeric_limits<std::size_t>::max());
+                today = render(scene, options);
+                detail::set_reorder_min_triangles(previous);
+            }
+            {
+                AlwaysReorder always;
+                reordered = render(scene, options);
+            }
+            INFO("eye " << eye.x << " " << eye.y << " " << eye.z << ", " << to_string(shader));
+            REQUIRE(today.stats.triangles_drawn > 1000);
+            CHECK(same_bits(today.image.pixels, reordered.image.pixels));
+            CHECK(same_bits(today.aovs.normal, reordered.aovs.normal));
+        }
+    }
 }
