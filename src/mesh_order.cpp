@@ -234,15 +234,18 @@ void list_vertex_corners(const Mesh& mesh, MeshOrder& order, const std::function
     // the caller's order: each vertex's list comes out in that order.
     std::vector<std::uint32_t>& first = order.vertex_corners.first;
     std::vector<std::uint32_t>& corners = order.vertex_corners.corners;
+    // Polls inside the walks too: each walks every triangle on one thread.
+    constexpr std::size_t kPollEvery = 65536;
     first.assign(vertices + 1, 0);
-    for (const Triangle& tri : mesh.triangles) {
-        for (std::uint32_t index : tri) ++first[order.vertex_target[index] + 1];
+    for (std::size_t t = 0; t < triangles; ++t) {
+        if (poll && t % kPollEvery == 0) poll();
+        for (std::uint32_t index : mesh.triangles[t]) ++first[order.vertex_target[index] + 1];
     }
-    if (poll) poll();
     for (std::size_t v = 1; v <= vertices; ++v) first[v] += first[v - 1];
     resize_polling(corners, 3 * triangles, poll);
     // first[v] serves as v's cursor, ending at v + 1's start; then shifted back.
     for (std::size_t t = 0; t < triangles; ++t) {
+        if (poll && t % kPollEvery == 0) poll();
         const Triangle& tri = mesh.triangles[t];
         for (std::uint32_t corner = 0; corner < 3; ++corner) {
             corners[first[order.vertex_target[tri[corner]]]++] = triangle_target[t] << 2 | corner;
