@@ -104,14 +104,10 @@ bool needs_normals(const Scene& scene, const RenderOptions& options) {
 void normals_in_caller_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll) {
     Mesh& out = order.scene.mesh;
     if (mesh.triangles.size() <= kVertexCornersMaxTriangles) {
+        // Made on the first frame that computes normals, and again after the
+        // triangles were edited in place (the permutation is kept: any
+        // permutation gives the same picture, but the list is the triangles').
         if (!order.vertex_corners_made) list_vertex_corners(mesh, order, poll);
-        if (calculate_normals_by_corners(out.positions, out.triangles, order.vertex_corners, order.normals_scratch,
-                                         out.normals, poll)) {
-            return;
-        }
-        // The triangles were edited in place since the list was made (the
-        // permutation is kept: any permutation gives the same picture).
-        list_vertex_corners(mesh, order, poll);
         if (calculate_normals_by_corners(out.positions, out.triangles, order.vertex_corners, order.normals_scratch,
                                          out.normals, poll)) {
             return;
@@ -295,14 +291,25 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
     gather(mesh.positions, order.vertex_source, out.positions, poll);
     gather(mesh.colors, order.vertex_source, out.colors, poll);
     report();
+    // The corner list holds while the copy's triangles are those it was made
+    // with: each frame compares the new copy with the last (the old value is
+    // read where it is overwritten), so an edit in place, even one drawn by a
+    // frame that computed no normals, makes the list again.
+    const bool compare = order.vertex_corners_made && out.triangles.size() == mesh.triangles.size();
+    std::atomic<bool> triangles_changed{false};
     out.triangles.resize(mesh.triangles.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.triangles.size(), kGatherBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
+        bool changed = false;
         for (std::size_t k = range.begin(); k != range.end(); ++k) {
             const Triangle& tri = mesh.triangles[order.triangle_source[k]];
-            out.triangles[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+            const Triangle copied = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+            changed |= compare && out.triangles[k] != copied;
+            out.triangles[k] = copied;
         }
+        if (changed) triangles_changed.store(true, std::memory_order_relaxed);
     });
+    if (triangles_changed.load()) order.vertex_corners_made = false;
     report();
     // The normals the pipeline would compute from the caller's mesh (all of
     // them, or where a user normal is zero: "compute this one"), computed here

@@ -92,9 +92,10 @@ struct MeshOrder {
     Scene scene;
     NormalsScratch normals_scratch;
     /// Computed normals: each vertex's corners in the caller's order of
-    /// triangles, for the permutation in force (made with it, once per mesh,
-    /// on the first frame that computes normals; made again if the mesh's
-    /// triangles were edited in place since).
+    /// triangles, for the permutation in force and the copy's triangles
+    /// (made once per mesh, on the first frame that computes normals; made
+    /// again once a frame's copy of the triangles differs from the last's:
+    /// the mesh was edited in place).
     VertexCorners vertex_corners;
     bool vertex_corners_made = false;
     /// Normals computed in the caller's order, then permuted: only for a mesh

@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -131,9 +130,7 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
 // which the caller's mesh's one pass would add them: the same additions on
 // the same values, so the same bits. The faces are computed over the
 // renumbered triangles (local); each vertex then reads the faces of its
-// neighbourhood. Every entry is checked against the triangles it names (a
-// read of the triangle that is local too): a list made for triangles since
-// edited in place is detected, never used.
+// neighbourhood.
 bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
                                   const VertexCorners& corners, NormalsScratch& scratch,
                                   std::vector<glm::vec3>& normals, const std::function<void()>& poll) {
@@ -144,28 +141,20 @@ bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, cons
     }
     const std::vector<glm::dvec4>& faces = compute_faces(positions, triangles, scratch, poll);
     resize_polling(normals, vertex_count, poll);
-    std::atomic<bool> matches{true};
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_count, kBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
-        bool listed = true;
         for (std::size_t vertex = range.begin(); vertex != range.end(); ++vertex) {
             glm::dvec3 sum(0.0), largest_face(0.0);
             double largest_area = 0.0;
             const std::uint32_t end = corners.first[vertex + 1];
             for (std::uint32_t k = corners.first[vertex]; k < end; ++k) {
-                const std::uint32_t entry = corners.corners[k];
-                const std::uint32_t triangle = entry >> 2;
-                // An entry is in range (and its corner below 3) by construction;
-                // the triangle's content is the caller's, checked here.
-                listed &= triangle < triangle_count && (entry & 3u) < 3u && triangles[triangle][entry & 3u] == vertex;
-                add_face(faces[triangle < triangle_count ? triangle : 0], sum, largest_area, largest_face);
+                add_face(faces[corners.corners[k] >> 2], sum, largest_area, largest_face);
             }
             normals[vertex] = vertex_normal(sum, largest_area, largest_face);
         }
-        if (!listed) matches.store(false, std::memory_order_relaxed);
     });
     if (poll) poll();
-    return matches.load();
+    return true;
 }
 
 bool has_zero_normal(const std::vector<glm::vec3>& normals) {

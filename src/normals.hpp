@@ -47,9 +47,9 @@ constexpr std::size_t kVertexCornersMaxTriangles = std::size_t(1) << 30;
 /// calculate_normals_into() of the mesh of which (positions, triangles) is a
 /// renumbering that `corners` describes, in the renumbered order: each
 /// vertex sums its faces in `corners`' order, in parallel over vertices (reads
-/// stay local when the renumbering is). False, and `normals` unspecified,
-/// when `corners` does not list exactly these triangles' corners (a mesh
-/// edited in place since it was made): every entry is checked.
+/// stay local when the renumbering is). `corners` must list exactly these
+/// triangles' corners (MeshOrder makes it again after an edit in place);
+/// false, and `normals` unspecified, when its sizes do not fit them.
 bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
                                   const VertexCorners& corners, NormalsScratch& scratch,
                                   std::vector<glm::vec3>& normals, const std::function<void()>& poll = nullptr);
