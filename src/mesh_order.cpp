@@ -94,11 +94,29 @@ void copy_all_but_mesh(const Scene& from, Scene& to) {
     to.lighting = from.lighting;
 }
 
-/// The normals the pipeline would compute from the caller's mesh, when it
-/// would compute any: summed in the caller's triangle order, so the same bits.
-bool needs_computed_normals(const Scene& scene, const RenderOptions& options) {
-    if (!scene.mesh.normals.empty()) return false;
+/// Whether the pipeline reads normals (vertex_stage.cpp's need_normals).
+bool needs_normals(const Scene& scene, const RenderOptions& options) {
     return find_effects(scene).normals || !options.specialize_effects || options.aovs.normal;
+}
+
+/// order.scene.mesh.normals computed (its positions and triangles already
+/// copied), with the bits of calculate_normals() on the caller's mesh.
+void normals_in_caller_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll) {
+    Mesh& out = order.scene.mesh;
+    if (mesh.triangles.size() <= kVertexCornersMaxTriangles) {
+        // Made on the first frame that computes normals, and again after the
+        // triangles were edited in place (the permutation is kept: any
+        // permutation gives the same picture, but the list is the triangles').
+        if (!order.vertex_corners_made) list_vertex_corners(mesh, order, poll);
+        if (calculate_normals_by_corners(out.positions, out.triangles, order.vertex_corners, order.normals_scratch,
+                                         out.normals, poll)) {
+            return;
+        }
+    }
+    // On the caller's mesh, then permuted (scattered reads, same bits).
+    calculate_normals_into(mesh.positions, mesh.triangles, order.normals_scratch, order.normals, poll);
+    if (poll) poll();
+    gather(order.normals, order.vertex_source, out.normals, poll);
 }
 
 constexpr std::size_t kNoOverride = std::numeric_limits<std::size_t>::max() - 1;
@@ -146,6 +164,7 @@ double local_order_misses(const Mesh& mesh) {
 }
 
 void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll) {
+    order.vertex_corners_made = false;  // made for the permutation being replaced
     const auto report = [&poll] {
         if (poll) poll();
     };
@@ -201,6 +220,38 @@ void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<
     ++order.permutations_computed;
 }
 
+void list_vertex_corners(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll) {
+    order.vertex_corners_made = false;  // until finished (a cancel may stop it halfway)
+    const std::size_t triangles = mesh.triangles.size(), vertices = mesh.positions.size();
+    std::vector<std::uint32_t> triangle_target(triangles);
+    for (std::size_t k = 0; k < triangles; ++k) triangle_target[order.triangle_source[k]] = static_cast<std::uint32_t>(k);
+    if (poll) poll();
+    // A counting sort by internal vertex of the caller's corners, visited in
+    // the caller's order: each vertex's list comes out in that order.
+    std::vector<std::uint32_t>& first = order.vertex_corners.first;
+    std::vector<std::uint32_t>& corners = order.vertex_corners.corners;
+    // Polls inside the walks too: each walks every triangle on one thread.
+    constexpr std::size_t kPollEvery = 65536;
+    first.assign(vertices + 1, 0);
+    for (std::size_t t = 0; t < triangles; ++t) {
+        if (poll && t % kPollEvery == 0) poll();
+        for (std::uint32_t index : mesh.triangles[t]) ++first[order.vertex_target[index] + 1];
+    }
+    for (std::size_t v = 1; v <= vertices; ++v) first[v] += first[v - 1];
+    resize_polling(corners, 3 * triangles, poll);
+    // first[v] serves as v's cursor, ending at v + 1's start; then shifted back.
+    for (std::size_t t = 0; t < triangles; ++t) {
+        if (poll && t % kPollEvery == 0) poll();
+        const Triangle& tri = mesh.triangles[t];
+        for (std::uint32_t corner = 0; corner < 3; ++corner) {
+            corners[first[order.vertex_target[tri[corner]]]++] = triangle_target[t] << 2 | corner;
+        }
+    }
+    for (std::size_t v = vertices; v > 0; --v) first[v] = first[v - 1];
+    first[0] = 0;
+    order.vertex_corners_made = true;
+}
+
 const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& options, bool one_off,
                                    MeshOrder& order, const std::function<void()>& poll) {
     const auto report = [&poll] {
@@ -217,6 +268,7 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
             order.triangle_source.clear();
             order.vertex_target.clear();
             order.vertex_source.clear();
+            order.vertex_corners_made = false;
         } else {
             // Forgotten first: a cancel inside compute_mesh_order (RenderCancelled from
             // `poll`) leaves half-written permutations that must not pass for this mesh's.
@@ -239,22 +291,46 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
     gather(mesh.positions, order.vertex_source, out.positions, poll);
     gather(mesh.colors, order.vertex_source, out.colors, poll);
     report();
-    if (needs_computed_normals(scene, options)) {
-        calculate_normals_into(mesh.positions, mesh.triangles, order.normals_scratch, order.normals, poll);
-        report();
-        gather(order.normals, order.vertex_source, out.normals, poll);
-    } else {
-        gather(mesh.normals, order.vertex_source, out.normals, poll);
-    }
+    // The corner list holds while the copy's triangles are those it was made
+    // with: each frame compares the new copy with the last (the old value is
+    // read where it is overwritten), so an edit in place, even one drawn by a
+    // frame that computed no normals, makes the list again.
+    const bool compare = order.vertex_corners_made && out.triangles.size() == mesh.triangles.size();
+    std::atomic<bool> triangles_changed{false};
     out.triangles.resize(mesh.triangles.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.triangles.size(), kGatherBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
+        bool changed = false;
         for (std::size_t k = range.begin(); k != range.end(); ++k) {
             const Triangle& tri = mesh.triangles[order.triangle_source[k]];
-            out.triangles[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+            const Triangle copied = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+            changed |= compare && out.triangles[k] != copied;
+            out.triangles[k] = copied;
         }
+        if (changed) triangles_changed.store(true, std::memory_order_relaxed);
     });
+    if (triangles_changed.load()) order.vertex_corners_made = false;
     report();
+    // The normals the pipeline would compute from the caller's mesh (all of
+    // them, or where a user normal is zero: "compute this one"), computed here
+    // with the caller's mesh's bits. The vertex stage then finds no zero
+    // normal to compute but where every order computes zero (a vertex whose
+    // faces all have zero length: the sums' order cannot matter).
+    const bool needed = needs_normals(scene, options);
+    if (needed && mesh.normals.empty()) {
+        normals_in_caller_order(mesh, order, poll);
+    } else if (needed && has_zero_normal(mesh.normals)) {
+        normals_in_caller_order(mesh, order, poll);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.normals.size(), kGatherBlock),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                const glm::vec3& given = mesh.normals[order.vertex_source[v]];
+                if (given != glm::vec3(0.0f)) out.normals[v] = given;
+            }
+        });
+    } else {
+        gather(mesh.normals, order.vertex_source, out.normals, poll);
+    }
     // Contract version 2's per-triangle attributes follow their triangles.
     out.texcoords = mesh.texcoords;
     gather_corner_indices(mesh.texcoord_triangles, order.triangle_source, out.texcoord_triangles);

@@ -12,8 +12,10 @@
 // triangle's place in the list use its original index: painter's tie-break
 // (equal mean depths are drawn in the caller's order: painter_order()'s
 // tie rank) and the id output (AovPassInput::original_triangle). Computed
-// normals are summed in the caller's order too (they are computed from the
-// caller's mesh, then permuted).
+// normals are summed in the caller's order too: each vertex of the copy adds
+// its faces in the order a pass over the caller's triangles would
+// (MeshOrder::vertex_corners), so the copy's normals have the caller's
+// mesh's bits while every read stays local.
 //
 // What a Renderer keeps: the permutation, computed once per mesh (the
 // expensive part: a spatial sort), and the reordered copy's memory. The
@@ -89,7 +91,16 @@ struct MeshOrder {
     /// The caller's scene with the mesh in internal order, rebuilt every frame.
     Scene scene;
     NormalsScratch normals_scratch;
-    std::vector<glm::vec3> normals;  ///< computed in the caller's order, before the permutation
+    /// Computed normals: each vertex's corners in the caller's order of
+    /// triangles, for the permutation in force and the copy's triangles
+    /// (made once per mesh, on the first frame that computes normals; made
+    /// again once a frame's copy of the triangles differs from the last's:
+    /// the mesh was edited in place).
+    VertexCorners vertex_corners;
+    bool vertex_corners_made = false;
+    /// Normals computed in the caller's order, then permuted: only for a mesh
+    /// too large for vertex_corners (kVertexCornersMaxTriangles).
+    std::vector<glm::vec3> normals;
     /// Permutations computed so far (tests: a Renderer computes one per mesh).
     std::size_t permutations_computed = 0;
 
@@ -118,6 +129,12 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
 /// The permutation alone, for tests and benchmarks: fills order's
 /// triangle_source, vertex_target and vertex_source for `mesh`.
 void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll = nullptr);
+
+/// order.vertex_corners for `mesh` (the caller's) and order's permutation:
+/// each internal vertex's corners, internal triangles, listed by ascending
+/// caller's triangle, then corner (sets vertex_corners_made). Only for meshes
+/// of at most kVertexCornersMaxTriangles triangles.
+void list_vertex_corners(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll = nullptr);
 
 }  // namespace phongrast::detail
 

@@ -18,33 +18,18 @@
 
 namespace phongrast {
 namespace detail {
-// In parallel, and the same bits as one pass over the triangles in order:
-// each vertex's sums see its faces in the same order (ascending triangle,
-// then corner), whichever task or thread computes it. First every face's
-// cross product and length (in parallel over triangles); then the vertices
-// are split into as many ranges as the arena has threads, and each range's
-// task walks all triangles in order, adding only to its own vertices (a
-// sequential read of the index list per task; the scattered additions, the
-// cost on a mesh in a random order, are shared out); then each vertex is
-// normalised (in parallel).
-void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
-                            NormalsScratch& scratch, std::vector<glm::vec3>& normals,
-                            const std::function<void()>& poll) {
-    constexpr std::size_t kBlock = 16384;
-    const std::size_t vertex_count = positions.size(), triangle_count = triangles.size();
-    // New scratch memory is filled with polls in between (resize_polling.hpp).
-    std::vector<glm::dvec3>& sums = scratch.sums;
-    assign_polling(sums, vertex_count, glm::dvec3(0.0), poll);
-    // For the fallback: each vertex's largest adjacent face (twice its area) and unit normal.
-    std::vector<double>& largest_area = scratch.largest_area;
-    assign_polling(largest_area, vertex_count, 0.0, poll);
-    std::vector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
-    assign_polling(largest_face_normal, vertex_count, glm::dvec3(0.0), poll);
-    if (poll) poll();
+namespace {
 
-    std::vector<glm::dvec4>& faces = scratch.faces;  // cross product, twice the area (-1: not finite, skipped)
-    resize_polling(faces, triangle_count, poll);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangle_count, kBlock),
+constexpr std::size_t kBlock = 16384;
+
+/// Every face's cross product and its length, twice the face's area (w = -1:
+/// not finite, skipped), in parallel over triangles: scratch.faces.
+const std::vector<glm::dvec4>& compute_faces(const std::vector<glm::dvec3>& positions,
+                                             const std::vector<Triangle>& triangles, NormalsScratch& scratch,
+                                             const std::function<void()>& poll) {
+    std::vector<glm::dvec4>& faces = scratch.faces;
+    resize_polling(faces, triangles.size(), poll);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), kBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t t = range.begin(); t != range.end(); ++t) {
             const Triangle& triangle = triangles[t];
@@ -58,6 +43,60 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
         }
     });
     if (poll) poll();
+    return faces;
+}
+
+/// One face added to a vertex: its sum, and its largest face for the fallback.
+/// Both ways of computing normals add through here, so in the same order they
+/// give the same bits.
+inline void add_face(const glm::dvec4& face, glm::dvec3& sum, double& largest_area, glm::dvec3& largest_face) {
+    const double twice_area = face.w;
+    if (twice_area < 0.0) return;  // not finite
+    sum += glm::dvec3(face);
+    if (twice_area > largest_area) {
+        largest_area = twice_area;
+        largest_face = glm::dvec3(face);
+    }
+}
+
+/// A vertex's normal from its sum of faces.
+inline glm::vec3 vertex_normal(const glm::dvec3& sum, double largest_area, const glm::dvec3& largest_face) {
+    glm::dvec3 normal = safe_normalize<double>(sum);
+    // A sum that is tiny relative to its largest face means opposite faces
+    // cancelled (two-sided sheet): its direction is rounding noise.
+    const double sum_length = glm::length(sum);
+    if (normal == glm::dvec3(0.0) || !(sum_length > 1e-12 * largest_area)) {
+        normal = safe_normalize<double>(largest_face);
+    }
+    return glm::vec3(normal);
+}
+
+}  // namespace
+
+// In parallel, and the same bits as one pass over the triangles in order:
+// each vertex's sums see its faces in the same order (ascending triangle,
+// then corner), whichever task or thread computes it. First every face's
+// cross product and length (in parallel over triangles); then the vertices
+// are split into as many ranges as the arena has threads, and each range's
+// task walks all triangles in order, adding only to its own vertices (a
+// sequential read of the index list per task; the scattered additions, the
+// cost on a mesh in a random order, are shared out); then each vertex is
+// normalised (in parallel).
+void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
+                            NormalsScratch& scratch, std::vector<glm::vec3>& normals,
+                            const std::function<void()>& poll) {
+    const std::size_t vertex_count = positions.size(), triangle_count = triangles.size();
+    // New scratch memory is filled with polls in between (resize_polling.hpp).
+    std::vector<glm::dvec3>& sums = scratch.sums;
+    assign_polling(sums, vertex_count, glm::dvec3(0.0), poll);
+    // For the fallback: each vertex's largest adjacent face (twice its area) and unit normal.
+    std::vector<double>& largest_area = scratch.largest_area;
+    assign_polling(largest_area, vertex_count, 0.0, poll);
+    std::vector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
+    assign_polling(largest_face_normal, vertex_count, glm::dvec3(0.0), poll);
+    if (poll) poll();
+
+    const std::vector<glm::dvec4>& faces = compute_faces(positions, triangles, scratch, poll);
 
     const std::size_t ranges = std::max<std::size_t>(
         1, std::min<std::size_t>(static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
@@ -72,14 +111,7 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
             if (poll && t % kBlock == 0) poll();
             for (std::uint32_t vertex : triangles[t]) {
                 if (vertex < first || vertex >= end) continue;
-                const glm::dvec4& face = faces[t];
-                const double twice_area = face.w;
-                if (twice_area < 0.0) continue;  // not finite
-                sums[vertex] += glm::dvec3(face);
-                if (twice_area > largest_area[vertex]) {
-                    largest_area[vertex] = twice_area;
-                    largest_face_normal[vertex] = glm::dvec3(face);
-                }
+                add_face(faces[t], sums[vertex], largest_area[vertex], largest_face_normal[vertex]);
             }
         }
     });
@@ -89,16 +121,40 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_count, kBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t vertex = range.begin(); vertex != range.end(); ++vertex) {
-            glm::dvec3 normal = safe_normalize<double>(sums[vertex]);
-            // A sum that is tiny relative to its largest face means opposite faces
-            // cancelled (two-sided sheet): its direction is rounding noise.
-            const double sum_length = glm::length(sums[vertex]);
-            if (normal == glm::dvec3(0.0) || !(sum_length > 1e-12 * largest_area[vertex])) {
-                normal = safe_normalize<double>(largest_face_normal[vertex]);
-            }
-            normals[vertex] = glm::vec3(normal);
+            normals[vertex] = vertex_normal(sums[vertex], largest_area[vertex], largest_face_normal[vertex]);
         }
     });
+}
+
+// Each vertex adds its faces in the order `corners` lists them, the order in
+// which the caller's mesh's one pass would add them: the same additions on
+// the same values, so the same bits. The faces are computed over the
+// renumbered triangles (local); each vertex then reads the faces of its
+// neighbourhood.
+bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
+                                  const VertexCorners& corners, NormalsScratch& scratch,
+                                  std::vector<glm::vec3>& normals, const std::function<void()>& poll) {
+    const std::size_t vertex_count = positions.size(), triangle_count = triangles.size();
+    if (triangle_count > kVertexCornersMaxTriangles || corners.first.size() != vertex_count + 1 ||
+        corners.corners.size() != 3 * triangle_count || corners.first.back() != corners.corners.size()) {
+        return false;
+    }
+    const std::vector<glm::dvec4>& faces = compute_faces(positions, triangles, scratch, poll);
+    resize_polling(normals, vertex_count, poll);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_count, kBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t vertex = range.begin(); vertex != range.end(); ++vertex) {
+            glm::dvec3 sum(0.0), largest_face(0.0);
+            double largest_area = 0.0;
+            const std::uint32_t end = corners.first[vertex + 1];
+            for (std::uint32_t k = corners.first[vertex]; k < end; ++k) {
+                add_face(faces[corners.corners[k] >> 2], sum, largest_area, largest_face);
+            }
+            normals[vertex] = vertex_normal(sum, largest_area, largest_face);
+        }
+    });
+    if (poll) poll();
+    return true;
 }
 
 bool has_zero_normal(const std::vector<glm::vec3>& normals) {

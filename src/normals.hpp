@@ -3,6 +3,7 @@
 #ifndef PHONGRAST_SRC_NORMALS_HPP
 #define PHONGRAST_SRC_NORMALS_HPP
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -27,6 +28,31 @@ struct NormalsScratch {
 void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
                             NormalsScratch& scratch, std::vector<glm::vec3>& normals,
                             const std::function<void()>& poll = nullptr);
+
+/// Each vertex's corners, listed in the order in which calculate_normals_into()
+/// on another numbering of the same mesh (the caller's) adds its faces to the
+/// vertex's sum: ascending original triangle, then corner. With it, the
+/// normals of a reordered copy are computed locally (each vertex gathers its
+/// faces) and have the bits of the caller's order (mesh_order.cpp).
+struct VertexCorners {
+    /// Per vertex, where its corners start in `corners`; then their end.
+    std::vector<std::uint32_t> first;
+    /// (triangle << 2) | corner, triangles numbered as the copy numbers them.
+    std::vector<std::uint32_t> corners;
+};
+
+/// Triangles a VertexCorners can name (two bits of each entry are the corner).
+constexpr std::size_t kVertexCornersMaxTriangles = std::size_t(1) << 30;
+
+/// calculate_normals_into() of the mesh of which (positions, triangles) is a
+/// renumbering that `corners` describes, in the renumbered order: each
+/// vertex sums its faces in `corners`' order, in parallel over vertices (reads
+/// stay local when the renumbering is). `corners` must list exactly these
+/// triangles' corners (MeshOrder makes it again after an edit in place);
+/// false, and `normals` unspecified, when its sizes do not fit them.
+bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, const std::vector<Triangle>& triangles,
+                                  const VertexCorners& corners, NormalsScratch& scratch,
+                                  std::vector<glm::vec3>& normals, const std::function<void()>& poll = nullptr);
 
 /// Whether some user normal (Mesh::normals) is exactly zero: "no normal here".
 bool has_zero_normal(const std::vector<glm::vec3>& normals);
