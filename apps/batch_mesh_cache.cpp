@@ -3,6 +3,7 @@
 #include <set>
 
 #include "phongrast/io/texture_file.hpp"
+#include "phongrast/mesh.hpp"
 
 namespace phongrast::cli {
 namespace {
@@ -85,6 +86,24 @@ std::shared_ptr<const io::MeshFile> MeshFileCache::read(const std::string& path)
     return entries_.front().file;
 }
 
+std::shared_ptr<const std::vector<glm::vec3>> MeshFileCache::computed_normals(
+    const std::shared_ptr<const io::MeshFile>& file) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (Entry& entry : entries_) {
+        if (entry.file != file) continue;
+        if (!entry.normals) {
+            entry.normals = std::make_shared<const std::vector<glm::vec3>>(calculate_normals(file->mesh));
+            ++normals_computed_;
+            const std::size_t normal_bytes = vector_bytes(*entry.normals);
+            entry.bytes += normal_bytes;
+            bytes_ += normal_bytes;  // over the budget now: the next read() drops the least recently used
+        }
+        return entry.normals;
+    }
+    ++normals_computed_;
+    return std::make_shared<const std::vector<glm::vec3>>(calculate_normals(file->mesh));
+}
+
 std::size_t MeshFileCache::files() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return entries_.size();
@@ -98,6 +117,11 @@ std::size_t MeshFileCache::bytes() const {
 std::size_t MeshFileCache::parses() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return parses_;
+}
+
+std::size_t MeshFileCache::normals_computed() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return normals_computed_;
 }
 
 }  // namespace phongrast::cli
