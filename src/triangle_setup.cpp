@@ -427,26 +427,28 @@ void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, std::v
 /// Maps a growing vector's reserved pages in steps of 64 KiB a little
 /// ahead of its end (populate_pages.hpp): one call per step instead of a
 /// page fault per 4 KiB, and never more than a step beyond what is written.
+/// `mapped` remembers how far, in this storage, from earlier frames too.
 template <typename T>
 class RecordPages {
 public:
+    explicit RecordPages(MappedRecords& mapped) : mapped_(mapped) {}
+
     void map_ahead(std::vector<T>& records) {
-        if (records.data() != base_) {  // new storage (first call, or grown past its reservation)
-            base_ = records.data();
-            mapped_ = records.size();
+        if (records.data() != mapped_.storage) {  // new storage (first call, or grown past its reservation)
+            mapped_.storage = records.data();
+            mapped_.records = records.size();
         }
         // A triangle writes a few records at most (more only when clipped: then faults as before).
-        if (records.size() + kAhead <= mapped_ || mapped_ >= records.capacity()) return;
-        const std::size_t next = std::min(records.capacity(), std::max(mapped_, records.size()) + kStep);
-        populate_for_writing(records.data() + mapped_, (next - mapped_) * sizeof(T));
-        mapped_ = next;
+        if (records.size() + kAhead <= mapped_.records || mapped_.records >= records.capacity()) return;
+        const std::size_t next = std::min(records.capacity(), std::max(mapped_.records, records.size()) + kStep);
+        populate_for_writing(records.data() + mapped_.records, (next - mapped_.records) * sizeof(T));
+        mapped_.records = next;
     }
 
 private:
     static constexpr std::size_t kStep = std::max<std::size_t>(1, (std::size_t(64) << 10) / sizeof(T));
     static constexpr std::size_t kAhead = 4;
-    const T* base_ = nullptr;
-    std::size_t mapped_ = 0;
+    MappedRecords& mapped_;
 };
 
 template <typename Real>
@@ -459,6 +461,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
     if (draws.chunk_keys.size() < chunks) draws.chunk_keys.resize(chunks);
     if (draws.chunk_clip_vertices.size() < chunks) draws.chunk_clip_vertices.resize(chunks);
     if (draws.chunk_vectors.size() < chunks) draws.chunk_vectors.resize(chunks);
+    if (draws.chunk_mapped.size() < chunks) draws.chunk_mapped.resize(chunks);
     draws.chunk_counts.assign(chunks, SetupCounts{});
     draws.chunks = chunks;
     const std::vector<ScreenVertex>& screen = input.vertices.screen;
@@ -484,7 +487,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
         draws.chunk_clip_vertices[chunk].clear();
         TriangleSetup<Real> setup(input, out, draws.chunk_clip_vertices[chunk], draws.chunk_counts[chunk],
                                   draws.chunk_vectors[chunk]);
-        RecordPages<FillTriangle<Real>> pages;
+        RecordPages<FillTriangle<Real>> pages(draws.chunk_mapped[chunk]);
         for (std::size_t t = begin; t < end; ++t) {
             pages.map_ahead(out);
             const std::size_t first = out.size();
