@@ -10,6 +10,8 @@
 #include <sstream>
 #include <vector>
 
+#include <sys/stat.h>
+
 #include "io/png_bytes.hpp"
 #include "io_test_files.hpp"
 #include "phongrast/camera.hpp"
@@ -19,6 +21,7 @@
 #include "phongrast/io/aov_file.hpp"
 #include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/sheet.hpp"
+#include "phongrast/io/text_file.hpp"
 
 using namespace phongrast;
 using Catch::Matchers::Contains;
@@ -102,6 +105,22 @@ TEST_CASE("PNG's 8-bit conversion of a whole image gives to_8_bit's value for ea
     CHECK(io::detail::to_8_bit(inf) == 255);
     CHECK(io::detail::to_8_bit(-inf) == 0);
     CHECK(io::detail::to_8_bit(1.0f) == 255);
+}
+
+TEST_CASE("files are written with a new file's permissions (0666 less the umask), no temporary file left") {
+    TemporaryFolder folder;
+    const mode_t old_mask = ::umask(027);
+    io::write_image(test_pattern(), folder.file("a.png"));
+    io::write_image(test_pattern(), folder.file("a.png"));  // replaced
+    io::write_image(test_pattern(), folder.file("b.exr"));
+    io::write_text_file(folder.file("c.json"), "{}");
+    ::umask(old_mask);
+    for (const char* name : {"a.png", "b.exr", "c.json"}) {
+        struct stat status {};
+        REQUIRE(::stat(folder.file(name).c_str(), &status) == 0);
+        CHECK((status.st_mode & 0777) == 0640);
+    }
+    CHECK(folder.entry_count() == 3);
 }
 
 TEST_CASE("EXR keeps linear unclamped floats") {
