@@ -56,7 +56,7 @@ std::shared_ptr<const io::MeshFile> MeshFileCache::read(const std::string& path)
     if (!identity.empty()) {
         const std::string canonical = identity_path(identity);
         for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
-            if (identity_path(entry->identity) != canonical) continue;
+            if (entry->canonical != canonical) continue;
             if (entry->identity == identity && sides_unchanged(entry->side_identities)) {
                 entries_.splice(entries_.begin(), entries_, entry);  // now the most recently used
                 return entries_.front().file;
@@ -68,6 +68,7 @@ std::shared_ptr<const io::MeshFile> MeshFileCache::read(const std::string& path)
     }
     Entry fresh;
     fresh.identity = identity;
+    fresh.canonical = identity_path(identity);
     // read_mesh throws for a bad file, and nothing is kept. The side files are
     // known only after the read: one edited during it is seen at its next edit.
     fresh.file = std::make_shared<const io::MeshFile>(io::read_mesh(path));

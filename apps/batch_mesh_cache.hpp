@@ -49,6 +49,7 @@ public:
 private:
     struct Entry {
         std::string identity;  ///< the mesh file's
+        std::string canonical;  ///< the canonical path in `identity` (compared with each read's)
         std::vector<std::pair<std::string, std::string>> side_identities;  ///< (path, identity at reading)
         std::shared_ptr<const io::MeshFile> file;
         std::shared_ptr<const std::vector<glm::vec3>> normals;  ///< computed_normals(), once asked for

@@ -148,7 +148,9 @@ JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes) {
             return read.back();
         };
     }
-    const Messages silent(true);  // notes for thousands of jobs would drown the progress; errors go to the log
+    // Notes for thousands of jobs would drown the progress; errors go to the
+    // log. One for every job (its constructor asks whether stderr is a terminal).
+    static const Messages silent(true);
 
     JobScenes scenes;
     if (job.kind == JobKind::inline_scene) {
