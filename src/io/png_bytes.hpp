@@ -15,9 +15,9 @@ namespace phongrast::io::detail {
 
 /// [0,1] clamp then round to 8 bits, no gamma curve; NaN (never expected) becomes 0.
 /// The rounding is std::lround(clamped * 255.0f)'s (half away from zero)
-/// without the library call, so that a loop over an image vectorizes: the
-/// float product is below 256, so adding 0.5 in double is exact and
-/// truncating the sum rounds it.
+/// without the library call: the float product is below 256, so adding 0.5
+/// in double is exact and truncating the sum rounds it. (A loop of this
+/// over an image still did not vectorize: the array form below does.)
 inline std::uint8_t to_8_bit(float value) {
     const float clamped = value > 0.0f ? (value < 1.0f ? value : 1.0f) : 0.0f;
     return static_cast<std::uint8_t>(static_cast<int>(static_cast<double>(clamped * 255.0f) + 0.5));
