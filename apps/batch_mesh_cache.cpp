@@ -3,6 +3,7 @@
 #include <set>
 
 #include "phongrast/io/texture_file.hpp"
+#include "phongrast/mesh.hpp"
 
 namespace phongrast::cli {
 namespace {
@@ -55,7 +56,7 @@ std::shared_ptr<const io::MeshFile> MeshFileCache::read(const std::string& path)
     if (!identity.empty()) {
         const std::string canonical = identity_path(identity);
         for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
-            if (identity_path(entry->identity) != canonical) continue;
+            if (entry->canonical != canonical) continue;
             if (entry->identity == identity && sides_unchanged(entry->side_identities)) {
                 entries_.splice(entries_.begin(), entries_, entry);  // now the most recently used
                 return entries_.front().file;
@@ -67,6 +68,7 @@ std::shared_ptr<const io::MeshFile> MeshFileCache::read(const std::string& path)
     }
     Entry fresh;
     fresh.identity = identity;
+    fresh.canonical = identity_path(identity);
     // read_mesh throws for a bad file, and nothing is kept. The side files are
     // known only after the read: one edited during it is seen at its next edit.
     fresh.file = std::make_shared<const io::MeshFile>(io::read_mesh(path));
@@ -85,6 +87,24 @@ std::shared_ptr<const io::MeshFile> MeshFileCache::read(const std::string& path)
     return entries_.front().file;
 }
 
+std::shared_ptr<const std::vector<glm::vec3>> MeshFileCache::computed_normals(
+    const std::shared_ptr<const io::MeshFile>& file) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (Entry& entry : entries_) {
+        if (entry.file != file) continue;
+        if (!entry.normals) {
+            entry.normals = std::make_shared<const std::vector<glm::vec3>>(calculate_normals(file->mesh));
+            ++normals_computed_;
+            const std::size_t normal_bytes = vector_bytes(*entry.normals);
+            entry.bytes += normal_bytes;
+            bytes_ += normal_bytes;  // over the budget now: the next read() drops the least recently used
+        }
+        return entry.normals;
+    }
+    ++normals_computed_;
+    return std::make_shared<const std::vector<glm::vec3>>(calculate_normals(file->mesh));
+}
+
 std::size_t MeshFileCache::files() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return entries_.size();
@@ -98,6 +118,11 @@ std::size_t MeshFileCache::bytes() const {
 std::size_t MeshFileCache::parses() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return parses_;
+}
+
+std::size_t MeshFileCache::normals_computed() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return normals_computed_;
 }
 
 }  // namespace phongrast::cli

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "phongrast/io/mesh_file.hpp"
 
 namespace phongrast::cli {
@@ -32,15 +34,25 @@ public:
     /// The mesh just read is kept even when it alone is over the budget (until the next).
     std::shared_ptr<const io::MeshFile> read(const std::string& path);
 
+    /// calculate_normals() of `file`'s mesh (what the renderer computes for
+    /// a mesh given without normals), computed on the first request and kept
+    /// with the file while the file is kept; a file the cache does not hold
+    /// gets them computed and not kept. A batch names each mesh many times,
+    /// and each of its jobs' renders would otherwise compute them again.
+    std::shared_ptr<const std::vector<glm::vec3>> computed_normals(const std::shared_ptr<const io::MeshFile>& file);
+
     std::size_t files() const;  ///< meshes kept now
-    std::size_t bytes() const;  ///< their estimated memory
+    std::size_t bytes() const;  ///< their estimated memory (with their normals)
     std::size_t parses() const;  ///< files parsed so far (not found in the cache)
+    std::size_t normals_computed() const;  ///< computed_normals() calls that computed them
 
 private:
     struct Entry {
         std::string identity;  ///< the mesh file's
+        std::string canonical;  ///< the canonical path in `identity` (compared with each read's)
         std::vector<std::pair<std::string, std::string>> side_identities;  ///< (path, identity at reading)
         std::shared_ptr<const io::MeshFile> file;
+        std::shared_ptr<const std::vector<glm::vec3>> normals;  ///< computed_normals(), once asked for
         std::size_t bytes = 0;
     };
 
@@ -49,6 +61,7 @@ private:
     std::size_t budget_;
     std::size_t bytes_ = 0;
     std::size_t parses_ = 0;
+    std::size_t normals_computed_ = 0;
 };
 
 /// The memory a parsed mesh holds: its arrays, material names and texture

@@ -72,7 +72,7 @@ private:
             if (::getppid() != parent) _exit(3);
             int status = 0;
             try {
-                run_worker(jobs_, next_, run_.output_folder, run_.threads, run_.image_options, ends[1]);
+                run_worker(jobs_, next_, run_.output_folder, run_.threads, run_.image_options, ends[1], one_lane_);
             } catch (const std::exception& error) {
                 std::cerr << "phongrast: internal error in the batch worker: " << error.what() << '\n';
                 status = 3;
@@ -133,6 +133,16 @@ private:
         ::close(descriptor_);
         const bool finished = WIFEXITED(status) && WEXITSTATUS(status) == 0 && running_.empty();
         if (finished && next_ >= jobs_.size()) return;
+        if (!finished && running_.size() > 1 && !one_lane_) {
+            // Several jobs were rendering side by side (render lanes): which one
+            // crashed is not known. Their partial files go, and a worker with one
+            // lane starts again from the oldest, so that the culprit crashes alone
+            // and only it is recorded as failed.
+            next_ = running_.front().position;
+            clean_up_running(next_);
+            one_lane_ = true;
+            return;
+        }
         // Blame the job it was on (or the next one, if it died between jobs) so the shard moves on.
         const std::size_t position = running_.empty() ? next_ : running_.front().position;
         const Clock::time_point start = running_.empty() ? Clock::now() : running_.front().start;
@@ -195,6 +205,7 @@ private:
     BatchProgress& progress_;
     std::size_t next_ = 0;
     int failures_ = 0;
+    bool one_lane_ = false;  ///< after a crash with several jobs rendering: one render lane from then on
     pid_t pid_ = -1;
     int descriptor_ = -1;
     std::string buffer_;

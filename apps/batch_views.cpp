@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 
 #include "phongrast/camera.hpp"
@@ -32,7 +33,32 @@ std::pair<double, double> half_extent(const Mesh& mesh, const Camera& camera, in
     return {half_width, half_height};
 }
 
+template <typename T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
 }  // namespace
+
+bool renders_computed_normals(const Scene& scene) {
+    // The renderer's version-1 path (src/scene_assembly.hpp, needs_assembly):
+    // assembled scenes compute their normals their own way, so any
+    // version-2 attribute, even one that would not need assembly, rules the
+    // mesh out.
+    const Mesh& mesh = scene.mesh;
+    return scene.objects.empty() && scene.material_fields.empty() && mesh.normals.empty() && mesh.texcoords.empty() &&
+           mesh.texcoord_triangles.empty() && mesh.file_normals.empty() && mesh.file_normal_triangles.empty() &&
+           mesh.materials.empty() && mesh.face_materials.empty();
+}
+
+void give_computed_normals(Scene& scene, const std::shared_ptr<const io::MeshFile>& file, MeshFileCache& meshes) {
+    if (!renders_computed_normals(scene)) return;
+    // Normals computed from other positions or triangles would be wrong ones.
+    if (!same_bits(scene.mesh.positions, file->mesh.positions) || !same_bits(scene.mesh.triangles, file->mesh.triangles)) {
+        return;
+    }
+    scene.mesh.normals = *meshes.computed_normals(file);
+}
 
 std::vector<ViewDirection> turntable_directions(int views_per_ring, const std::vector<double>& elevations_degrees) {
     const double pi = std::acos(-1.0);
@@ -115,8 +141,16 @@ JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes) {
     flags.options = job.settings.options;
     flags.samples = job.settings.samples.value_or(1);
     flags.threads = threads;
-    if (meshes != nullptr) flags.read_mesh = [meshes](const std::string& path) { return meshes->read(path); };
-    const Messages silent(true);  // notes for thousands of jobs would drown the progress; errors go to the log
+    std::vector<std::shared_ptr<const io::MeshFile>> read;  // the files the job's scene was made from
+    if (meshes != nullptr) {
+        flags.read_mesh = [meshes, &read](const std::string& path) {
+            read.push_back(meshes->read(path));
+            return read.back();
+        };
+    }
+    // Notes for thousands of jobs would drown the progress; errors go to the
+    // log. One for every job (its constructor asks whether stderr is a terminal).
+    static const Messages silent(true);
 
     JobScenes scenes;
     if (job.kind == JobKind::inline_scene) {
@@ -125,6 +159,7 @@ JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes) {
     } else {
         scenes.prepared = prepare_scene(flags, silent);
     }
+    if (read.size() == 1) give_computed_normals(scenes.prepared.scene, read.front(), *meshes);
     if (job.kind == JobKind::mesh && !job.cameras.empty()) {
         use_cameras(scenes.prepared.scene, job.cameras, scenes);
     } else if (job.kind == JobKind::mesh) {

@@ -30,6 +30,19 @@ struct JobScenes {
 /// fails, the batch goes on).
 JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes = nullptr);
 
+/// Whether the renderer computes `scene`'s vertex normals from its mesh's
+/// positions and triangles alone (calculate_normals): one mesh given without
+/// normals and without any of contract version 2's attributes.
+bool renders_computed_normals(const Scene& scene);
+
+/// When renders_computed_normals(scene) and its mesh's positions and
+/// triangles are `file`'s, bit for bit: gives the mesh the normals the
+/// renderer would compute, kept in `meshes` with the file, so that the jobs
+/// of one mesh compute them once. The picture is the same bits (the renderer
+/// uses given normals as they are; a zero one, where no face has an area,
+/// is computed again, zero again).
+void give_computed_normals(Scene& scene, const std::shared_ptr<const io::MeshFile>& file, MeshFileCache& meshes);
+
 /// Where one view looks from, relative to the automatic framing's view:
 /// turned `azimuth` radians about the vertical (+y) axis through the look-at
 /// point after being tilted up by `elevation` radians.

@@ -1,13 +1,18 @@
 #include "batch_worker.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <condition_variable>
+#include <deque>
 #include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <thread>
 
 #include <nlohmann/json.hpp>
+#include <sched.h>
 #include <unistd.h>
 
 #include "batch_queue.hpp"
@@ -65,6 +70,120 @@ struct WriteItem {
     std::vector<std::pair<std::string, std::string>> job_files;
 };
 
+/// Images on their way from the render lanes to the writer, which takes them
+/// job by job in the list's order (so the supervisor hears of jobs ending in
+/// order, as it expects): the job being written, then the next. A lane
+/// waits while `capacity` images are waiting, except for the job being
+/// written (up to `capacity` of its own), which can therefore always go on.
+class OrderedWrites {
+public:
+    OrderedWrites(std::size_t first, std::size_t capacity) : current_(first), capacity_(capacity) {}
+
+    void push(WriteItem item) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [&] {
+            return items_.size() < capacity_ || (item.position == current_ && waiting_for(current_) < capacity_);
+        });
+        items_.push_back(std::move(item));
+        changed_.notify_all();
+    }
+
+    /// The next image (or end) of the job being written; after its end, the next job is.
+    WriteItem pop() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        std::deque<WriteItem>::iterator found;
+        changed_.wait(lock, [&] {
+            found = std::find_if(items_.begin(), items_.end(), [&](const WriteItem& i) { return i.position == current_; });
+            return found != items_.end();
+        });
+        WriteItem item = std::move(*found);
+        items_.erase(found);
+        if (!item.image) ++current_;
+        changed_.notify_all();
+        return item;
+    }
+
+private:
+    std::size_t waiting_for(std::size_t position) const {
+        return static_cast<std::size_t>(std::count_if(items_.begin(), items_.end(),
+                                                      [&](const WriteItem& i) { return i.position == position; }));
+    }
+
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::deque<WriteItem> items_;
+    std::size_t current_;
+    std::size_t capacity_;
+};
+
+/// Which lanes may render now. A small job (lane_sized()) renders on one
+/// thread beside the other lanes' small jobs; any other job renders alone,
+/// with every thread, as a single lane would: it waits until every earlier
+/// job has been rendered and no other lane is rendering, and later jobs wait
+/// for it. (Waiting for the earlier jobs first means the job rendering alone
+/// is the one being written, so its images are never held up behind a full
+/// queue: no lane can wait for another in a circle.)
+class RenderGate {
+public:
+    explicit RenderGate(std::size_t first) : rendered_below_(first) {}
+
+    /// Blocks until job `position` may render a frame; `alone`: a job that renders alone.
+    void enter(std::size_t position, bool alone) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        if (alone) {
+            waiting_alone_.insert(position);
+            changed_.wait(lock, [&] { return rendered_below_ == position && rendering_ == 0; });
+        } else {
+            changed_.wait(lock, [&] { return waiting_alone_.empty() || *waiting_alone_.begin() > position; });
+        }
+        ++rendering_;
+    }
+
+    void leave() {
+        std::lock_guard<std::mutex> lock(mutex_);
+        --rendering_;
+        changed_.notify_all();
+    }
+
+    /// Job `position` has rendered every frame (or failed).
+    void done(std::size_t position) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        waiting_alone_.erase(position);
+        rendered_.insert(position);
+        while (!rendered_.empty() && *rendered_.begin() == rendered_below_) {
+            rendered_.erase(rendered_.begin());
+            ++rendered_below_;
+        }
+        changed_.notify_all();
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::size_t rendered_below_;         ///< every job before this one has been rendered
+    std::set<std::size_t> rendered_;     ///< jobs rendered at or after rendered_below_
+    std::set<std::size_t> waiting_alone_;  ///< jobs rendering alone, waiting or under way
+    int rendering_ = 0;                  ///< frames being rendered now
+};
+
+/// A job small enough to render on one thread beside other lanes: few views
+/// of small frames, which a renderer's threads share out poorly (each stage
+/// of a 256x256 frame is a fraction of a millisecond, and the threads wait
+/// for each other between stages) and whose memory per lane is small (the
+/// limits of render()'s kept memory, src/renderer.cpp).
+bool lane_sized(const JobScenes& scenes) {
+    constexpr std::size_t kViewsMax = 8;
+    constexpr std::size_t kSamplesMax = std::size_t{512} * 512;
+    constexpr std::size_t kTrianglesMax = std::size_t{1} << 18;
+    const Scene& scene = scenes.prepared.scene;
+    const auto per_axis = static_cast<std::size_t>(std::max(1, scenes.prepared.options.samples_per_axis));
+    const std::size_t samples = static_cast<std::size_t>(std::max(0, scene.image.rows)) *
+                                static_cast<std::size_t>(std::max(0, scene.image.columns)) * per_axis * per_axis;
+    std::size_t triangles = scene.mesh.triangles.size();
+    for (const SceneObject& object : scene.objects) triangles += object.mesh ? object.mesh->triangles.size() : 0;
+    return scenes.cameras.size() <= kViewsMax && samples <= kSamplesMax && triangles <= kTrianglesMax;
+}
+
 void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, int threads,
                 BoundedQueue<LoadedJob>& loaded) {
     MeshFileCache meshes;  // every mesh parsed once per shard, while memory allows
@@ -79,7 +198,7 @@ void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, int
     }
 }
 
-void write_images(std::size_t count, BoundedQueue<WriteItem>& pending, Reporter& reporter,
+void write_images(std::size_t count, OrderedWrites& pending, Reporter& reporter,
                   const io::ImageWriteOptions& image_options) {
     std::string error;  // of the job being written
     for (std::size_t finished = 0; finished < count;) {
@@ -149,9 +268,19 @@ std::vector<std::pair<std::string, std::string>> camera_files(const BatchJob& jo
     return files;
 }
 
+/// A lane's renderers: its own for small jobs (which keeps small frames'
+/// memory only), and the one every lane shares for the jobs that render
+/// alone (one at a time, RenderGate), so that large frames' memory is held once.
+struct LaneRenderers {
+    Renderer& alone;
+    Renderer lane;
+};
+
 /// Renders every view of one loaded job and queues its images, then its end.
-void render_job(Renderer& renderer, std::size_t position, const BatchJob& job, LoadedJob& loaded,
-                const std::string& output_folder, BoundedQueue<WriteItem>& pending) {
+/// `lanes`: how many render lanes the worker runs (more than one: a small
+/// job renders on one thread, RenderGate).
+void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& job, LoadedJob& loaded,
+                const std::string& output_folder, OrderedWrites& pending, RenderGate& gate, int lanes) {
     WriteItem end;
     end.position = position;
     end.error = loaded.error;
@@ -164,20 +293,30 @@ void render_job(Renderer& renderer, std::size_t position, const BatchJob& job, L
                 job.dataset_files.add_planes_to(scenes.prepared.options.aovs);
             }
             end.job_files = camera_files(job, scenes, output_folder);
-            renderer.set_options(scenes.prepared.options);
+            const bool alone = lanes == 1 || !lane_sized(scenes);
+            if (!alone) scenes.prepared.options.threads = 1;  // the other lanes use the other cores
+            Renderer& renderer = alone ? renderers.alone : renderers.lane;
             for (std::size_t view = 0; view < scenes.cameras.size(); ++view) {
                 scenes.prepared.scene.camera = scenes.cameras[view];
                 scenes.prepared.scene.lights = scenes.lights[view];
-                const RenderResult& result = renderer.render(scenes.prepared.scene);
-                end.render_seconds += result.stats.seconds;
                 WriteItem image;
+                {
+                    gate.enter(position, alone);
+                    struct Leave {
+                        RenderGate& gate;
+                        ~Leave() { gate.leave(); }
+                    } leave{gate};  // before the push, which may wait for another lane's job
+                    renderer.set_options(scenes.prepared.options);  // inside: the alone renderer is shared
+                    const RenderResult& result = renderer.render(scenes.prepared.scene);
+                    end.render_seconds += result.stats.seconds;
+                    image.image = result.image;
+                    if (job.dataset_files.any()) image.planes = result.aovs;
+                }
                 image.position = position;
-                image.image = result.image;
                 image.path = (fs::path(output_folder) / job.outputs[view]).string();
                 if (job.dataset_files.any()) {
                     image.dataset_files = job.dataset_files;
                     image.dataset_options = job.dataset_options;
-                    image.planes = result.aovs;
                     image.object_first_triangles = object_first_triangles;
                 }
                 pending.push(std::move(image));
@@ -186,24 +325,52 @@ void render_job(Renderer& renderer, std::size_t position, const BatchJob& job, L
             end.error = error.what();
         }
     }
+    gate.done(position);
     pending.push(std::move(end));
+}
+
+/// Render lanes for `threads` (0: every core this process may run on, up to 4).
+int lane_count(int threads) {
+    if (threads != 0) return 1;
+    cpu_set_t cpus;
+    CPU_ZERO(&cpus);
+    const int cores = ::sched_getaffinity(0, sizeof cpus, &cpus) == 0 ? CPU_COUNT(&cpus) : 1;
+    return std::clamp(cores, 1, 4);
 }
 
 }  // namespace
 
 void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, const std::string& output_folder,
-                int threads, const io::ImageWriteOptions& image_options, int report_fd) {
+                int threads, const io::ImageWriteOptions& image_options, int report_fd, bool one_lane) {
     Reporter reporter(report_fd);
-    BoundedQueue<LoadedJob> loaded(2);
-    BoundedQueue<WriteItem> pending(4);
+    const int lanes = one_lane ? 1 : lane_count(threads);
+    BoundedQueue<LoadedJob> loaded(static_cast<std::size_t>(std::max(2, lanes)));
+    OrderedWrites pending(first, 4);
+    RenderGate gate(first);
     std::thread loader([&] { load_ahead(jobs, first, threads, loaded); });
     std::thread writer([&] { write_images(jobs.size() - first, pending, reporter, image_options); });
-    Renderer renderer;
-    for (std::size_t position = first; position < jobs.size(); ++position) {
-        reporter.send({{"start", position}});
-        LoadedJob job = loaded.pop();
-        render_job(renderer, position, *jobs[position], job, output_folder, pending);
-    }
+    std::mutex taking;  // jobs are taken, reported started and popped in order
+    std::size_t next = first;
+    Renderer alone;
+    const auto lane = [&] {
+        LaneRenderers renderers{alone, Renderer()};
+        for (;;) {
+            std::size_t position = 0;
+            LoadedJob job;
+            {
+                std::lock_guard<std::mutex> lock(taking);
+                if (next >= jobs.size()) return;
+                position = next++;
+                reporter.send({{"start", position}});
+                job = loaded.pop();
+            }
+            render_job(renderers, position, *jobs[position], job, output_folder, pending, gate, lanes);
+        }
+    };
+    std::vector<std::thread> more_lanes;
+    for (int i = 1; i < lanes; ++i) more_lanes.emplace_back(lane);
+    lane();
+    for (std::thread& other : more_lanes) other.join();
     loader.join();
     writer.join();
 }

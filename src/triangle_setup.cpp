@@ -427,26 +427,28 @@ void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, ChunkV
 /// Maps a growing vector's reserved pages in steps of 64 KiB a little
 /// ahead of its end (populate_pages.hpp): one call per step instead of a
 /// page fault per 4 KiB, and never more than a step beyond what is written.
+/// `mapped` remembers how far, in this storage, from earlier frames too.
 template <typename T>
 class RecordPages {
 public:
+    explicit RecordPages(MappedRecords& mapped) : mapped_(mapped) {}
+
     void map_ahead(ChunkVector<T>& records) {
-        if (records.data() != base_) {  // new storage (first call, or grown past its reservation)
-            base_ = records.data();
-            mapped_ = records.size();
+        if (records.data() != mapped_.storage) {  // new storage (first call, or grown past its reservation)
+            mapped_.storage = records.data();
+            mapped_.records = records.size();
         }
         // A triangle writes a few records at most (more only when clipped: then faults as before).
-        if (records.size() + kAhead <= mapped_ || mapped_ >= records.capacity()) return;
-        const std::size_t next = std::min(records.capacity(), std::max(mapped_, records.size()) + kStep);
-        populate_for_writing(records.data() + mapped_, (next - mapped_) * sizeof(T));
-        mapped_ = next;
+        if (records.size() + kAhead <= mapped_.records || mapped_.records >= records.capacity()) return;
+        const std::size_t next = std::min(records.capacity(), std::max(mapped_.records, records.size()) + kStep);
+        populate_for_writing(records.data() + mapped_.records, (next - mapped_.records) * sizeof(T));
+        mapped_.records = next;
     }
 
 private:
     static constexpr std::size_t kStep = std::max<std::size_t>(1, (std::size_t(64) << 10) / sizeof(T));
     static constexpr std::size_t kAhead = 4;
-    const T* base_ = nullptr;
-    std::size_t mapped_ = 0;
+    MappedRecords& mapped_;
 };
 
 /// New chunk vectors for `chunks` chunks (more than the list has): in one
@@ -457,6 +459,7 @@ void make_chunk_vectors(DrawList<Real>& draws, std::size_t chunks) {
     draws.chunk_draws.clear();
     draws.chunk_drawn.clear();
     draws.chunk_keys.clear();
+    draws.chunk_mapped.clear();  // new storage, possibly at a freed one's address: nothing mapped yet
     draws.arena.reset(chunks, {kSetupChunk * sizeof(FillTriangle<Real>), kSetupChunk * sizeof(DrawSpan),
                                kSetupChunk * sizeof(std::uint64_t)});
     draws.chunk_draws.reserve(chunks);
@@ -477,6 +480,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
     if (draws.chunk_draws.size() < chunks) make_chunk_vectors(draws, chunks);
     if (draws.chunk_clip_vertices.size() < chunks) draws.chunk_clip_vertices.resize(chunks);
     if (draws.chunk_vectors.size() < chunks) draws.chunk_vectors.resize(chunks);
+    if (draws.chunk_mapped.size() < chunks) draws.chunk_mapped.resize(chunks);
     draws.chunk_counts.assign(chunks, SetupCounts{});
     draws.chunks = chunks;
     const std::vector<ScreenVertex>& screen = input.vertices.screen;
@@ -506,7 +510,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
         draws.chunk_clip_vertices[chunk].clear();
         TriangleSetup<Real> setup(input, out, draws.chunk_clip_vertices[chunk], draws.chunk_counts[chunk],
                                   draws.chunk_vectors[chunk]);
-        RecordPages<FillTriangle<Real>> pages;
+        RecordPages<FillTriangle<Real>> pages(draws.chunk_mapped[chunk]);
         for (std::size_t t = begin; t < end; ++t) {
             if (!mapped) pages.map_ahead(out);
             const std::size_t first = out.size();

@@ -3,9 +3,16 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
+#include <vector>
 
+#include <sys/stat.h>
+
+#include "io/png_bytes.hpp"
 #include "io_test_files.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/io/auto_scene.hpp"
@@ -14,6 +21,7 @@
 #include "phongrast/io/aov_file.hpp"
 #include "phongrast/io/mesh_file.hpp"
 #include "phongrast/io/sheet.hpp"
+#include "phongrast/io/text_file.hpp"
 
 using namespace phongrast;
 using Catch::Matchers::Contains;
@@ -55,6 +63,64 @@ TEST_CASE("PNG is 8-bit, clamped to [0,1], without a gamma curve") {
     CHECK(back.at(0, 2).x == Approx(51.0f / 255.0f));
     CHECK(back.at(1, 2) == glm::vec3(0, 0, 1));
     CHECK(folder.entry_count() == 1);
+}
+
+TEST_CASE("PNG's 8-bit conversion of a whole image gives to_8_bit's value for each float") {
+    // The image's values go through the array form (four at a time with SSE2,
+    // the rest one by one); to_8_bit(float) is the definition.
+    std::vector<float> values;
+    const auto from_bits = [](std::uint32_t bits) {
+        float value;
+        std::memcpy(&value, &bits, sizeof value);
+        return value;
+    };
+    // Every 61st float of [0, 1], and [-1, 0) more sparsely.
+    for (std::uint32_t bits = 0; bits <= 0x3f800000u; bits += 61) values.push_back(from_bits(bits));
+    for (std::uint32_t bits = 0x80000000u; bits <= 0xbf800000u; bits += 9973) values.push_back(from_bits(bits));
+    // 64 floats on each side of every rounding boundary (k + 0.5) / 255.
+    for (int k = 0; k < 255; ++k) {
+        float below = (static_cast<float>(k) + 0.5f) / 255.0f, above = below;
+        for (int step = 0; step < 64; ++step) {
+            values.push_back(below = std::nextafter(below, 0.0f));
+            values.push_back(above = std::nextafter(above, 1.0f));
+        }
+    }
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    for (const float special : {nan, -nan, inf, -inf, 0.0f, -0.0f, 1.0f, std::nextafter(1.0f, 2.0f), 2.0f, 1e30f,
+                                -1e30f, std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::min(),
+                                std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest()}) {
+        values.push_back(special);
+    }
+    // Every start and length modulo 4, so that each value meets both paths.
+    for (std::size_t skip = 0; skip < 4; ++skip) {
+        const std::size_t count = values.size() - skip - (3 - skip);
+        std::vector<std::uint8_t> bytes(count);
+        io::detail::to_8_bit(values.data() + skip, bytes.data(), count);
+        std::size_t wrong = 0;
+        for (std::size_t i = 0; i < count; ++i) wrong += bytes[i] != io::detail::to_8_bit(values[skip + i]) ? 1 : 0;
+        INFO("start " << skip << ", " << count << " values");
+        CHECK(wrong == 0);
+    }
+    CHECK(io::detail::to_8_bit(nan) == 0);
+    CHECK(io::detail::to_8_bit(inf) == 255);
+    CHECK(io::detail::to_8_bit(-inf) == 0);
+    CHECK(io::detail::to_8_bit(1.0f) == 255);
+}
+
+TEST_CASE("files are written with a new file's permissions (0666 less the umask), no temporary file left") {
+    TemporaryFolder folder;
+    const mode_t old_mask = ::umask(027);
+    io::write_image(test_pattern(), folder.file("a.png"));
+    io::write_image(test_pattern(), folder.file("a.png"));  // replaced
+    io::write_image(test_pattern(), folder.file("b.exr"));
+    io::write_text_file(folder.file("c.json"), "{}");
+    ::umask(old_mask);
+    for (const char* name : {"a.png", "b.exr", "c.json"}) {
+        struct stat status {};
+        REQUIRE(::stat(folder.file(name).c_str(), &status) == 0);
+        CHECK((status.st_mode & 0777) == 0640);
+    }
+    CHECK(folder.entry_count() == 3);
 }
 
 TEST_CASE("EXR keeps linear unclamped floats") {

@@ -33,6 +33,13 @@ std::string lower_case_extension(const std::string& path) {
     return extension;
 }
 
+/// The image's values as one flat array, red, green, blue of each pixel in
+/// turn: glm::vec3 is three packed floats (the EXR writer below relies on it too).
+const float* rgb_values(const Image& image) {
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "glm::vec3 must be three packed floats");
+    return &image.pixels.data()->x;
+}
+
 void write_png_rgb(const Image& image, const std::string& temporary, const std::string& path,
                    const ImageWriteOptions& options) {
     detail::PngPixels pixels;
@@ -41,20 +48,22 @@ void write_png_rgb(const Image& image, const std::string& temporary, const std::
     pixels.channels = 3;
     pixels.bit_depth = options.png_bit_depth;
     const std::size_t values = image.pixels.size() * 3;
+    const float* from = rgb_values(image);
     const detail::PngSettings settings = detail::png_settings(options.png_compression);
+    // Kept per thread, as the encoder's buffers are: a batch's writer thread
+    // converts image after image, and a fresh buffer is zeroed (and, past
+    // malloc's mapping threshold, faulted in) before it is written over.
     if (options.png_bit_depth == 16) {
-        std::vector<std::uint16_t> words(values);
-        for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-            for (int c = 0; c < 3; ++c) words[3 * i + static_cast<std::size_t>(c)] = detail::to_16_bit(image.pixels[i][c]);
-        }
+        thread_local std::vector<std::uint16_t> words;
+        words.resize(values);
+        for (std::size_t i = 0; i < values; ++i) words[i] = detail::to_16_bit(from[i]);
         pixels.data = words.data();
         detail::write_png(temporary, path, pixels, settings);
         return;
     }
-    std::vector<std::uint8_t> bytes(values);
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        for (int c = 0; c < 3; ++c) bytes[3 * i + static_cast<std::size_t>(c)] = detail::to_8_bit(image.pixels[i][c]);
-    }
+    thread_local std::vector<std::uint8_t> bytes;
+    bytes.resize(values);
+    detail::to_8_bit(from, bytes.data(), values);
     pixels.data = bytes.data();
     detail::write_png(temporary, path, pixels, settings);
 }

@@ -5,9 +5,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <vector>
+#include <random>
+#include <string>
 
-#include <sys/stat.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "phongrast/io/error.hpp"
@@ -15,29 +16,37 @@
 namespace phongrast::io {
 namespace {
 
-/// Creates an empty, uniquely named file next to `path` that keeps its
-/// extension (OpenImageIO picks the format from it) and returns its name.
+/// Six letters or digits for a temporary name, from a generator per thread
+/// seeded from the system's entropy (a name already taken is simply tried again).
+std::string random_letters() {
+    static const char kLetters[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+    thread_local std::mt19937_64 random(std::random_device{}());
+    std::string letters(6, 'X');
+    for (char& letter : letters) letter = kLetters[random() % (sizeof kLetters - 1)];
+    return letters;
+}
+
+/// Creates an empty, uniquely named file next to `path`, ".STEM.tmp-XXXXXX.EXT"
+/// (it keeps the extension, which some writers pick the format from), and
+/// returns its name. Created with mode 0666 less the umask, as any new file,
+/// in one call (mkstemps made it 0600, then umask was read and restored and
+/// the mode changed: three more system calls per image of a batch).
 std::string make_temporary_file_next_to(const std::string& path) {
     const std::filesystem::path target(path);
     const std::filesystem::path folder =
         target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
     const std::string extension = target.extension().string();
-    std::string pattern =
-        (folder / ("." + target.stem().string() + ".tmp-XXXXXX" + extension)).string();
-    std::vector<char> buffer(pattern.begin(), pattern.end());
-    buffer.push_back('\0');
-    const int descriptor = mkstemps(buffer.data(), static_cast<int>(extension.size()));
-    if (descriptor < 0) {
-        throw FileError(path + ": cannot write a file in folder '" + folder.string() +
-                        "': " + std::strerror(errno));
+    const std::string prefix = (folder / ("." + target.stem().string() + ".tmp-")).string();
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const std::string name = prefix + random_letters() + extension;
+        const int descriptor = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (descriptor >= 0) {
+            ::close(descriptor);
+            return name;
+        }
+        if (errno != EEXIST) break;
     }
-    // mkstemps makes the file private (0600); give it the permissions a plain
-    // new file would have, so the renamed result is not surprisingly private.
-    const mode_t mask = umask(0);
-    umask(mask);
-    fchmod(descriptor, static_cast<mode_t>(0666 & ~mask));
-    close(descriptor);
-    return std::string(buffer.data());
+    throw FileError(path + ": cannot write a file in folder '" + folder.string() + "': " + std::strerror(errno));
 }
 
 }  // namespace

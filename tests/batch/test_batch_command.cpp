@@ -263,6 +263,41 @@ TEST_CASE("for several N, N shards into one folder render every job exactly once
     }
 }
 
+TEST_CASE("render lanes (the default) and one lane (--threads 1) write the same files, jobs logged in manifest order") {
+    // Small jobs (meshes and a scene file) render side by side on one thread
+    // each; a 9-view turntable and a 600x600 image between them render alone.
+    TemporaryFolder folder;
+    small_manifest(folder, 0);
+    std::string text;
+    for (int job = 0; job < 24; ++job) {
+        const std::string n = std::to_string(job);
+        if (job == 5) {
+            text += "{\"mesh\": \"knot.obj\", \"views\": 9, \"size\": \"20x20\", \"output\": \"nine/{view}.png\"}\n";
+        } else if (job == 11) {
+            text += "{\"mesh\": \"knot.obj\", \"size\": \"600x600\", \"output\": \"big.png\"}\n";
+        } else if (job % 4 == 3) {
+            text += "{\"scene\": \"scene.json\", \"output\": \"s" + n + ".png\"}\n";
+        } else {
+            text += "{\"mesh\": \"knot.obj\", \"elevation\": " + std::to_string(3 * job) +
+                    ", \"size\": \"32x24\", \"output\": \"k" + n + ".png\"}\n";
+        }
+    }
+    folder.write("lanes.jsonl", text);
+    REQUIRE(run_phongrast(folder, "batch lanes.jsonl -q -o lanes").status == 0);
+    REQUIRE(run_phongrast(folder, "batch lanes.jsonl -q -o one --threads 1").status == 0);
+    const auto lanes = files_under(folder.file("lanes"));
+    CHECK(lanes.size() == 23 + 9);
+    CHECK(lanes == files_under(folder.file("one")));
+    std::vector<int> order;
+    for (const nlohmann::json& record : log_records(folder.file("lanes"))) {
+        CHECK(record["status"] == "done");
+        order.push_back(record["job"].get<int>());
+    }
+    std::vector<int> expected(24);
+    for (int line = 1; line <= 24; ++line) expected[static_cast<std::size_t>(line - 1)] = line;
+    CHECK(order == expected);
+}
+
 TEST_CASE("the shard comes from Slurm's or Kubernetes' variables") {
     TemporaryFolder folder;
     small_manifest(folder, 4);

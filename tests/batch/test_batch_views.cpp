@@ -15,6 +15,7 @@
 #include "phongrast/io/auto_scene.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/mesh_file.hpp"
+#include "phongrast/render.hpp"
 
 using namespace phongrast;
 using namespace phongrast::cli;
@@ -258,4 +259,54 @@ TEST_CASE("past the memory budget the least recently used meshes are dropped, th
     CHECK(none_fit.files() == 1);
     none_fit.read(a);
     CHECK(none_fit.parses() == 3);
+}
+
+TEST_CASE("a plain mesh's jobs get the normals the renderer computes, computed once per mesh, the same pictures") {
+    TemporaryFolder folder;
+    // A cone: smooth sides, one apex shared by every side, a degenerate face
+    // and an unused vertex (whose computed normal is zero).
+    std::string obj = "v 0 2 0\n";
+    const int sides = 12;
+    for (int i = 0; i < sides; ++i) {
+        const double angle = 2.0 * 3.141592653589793 * i / sides;
+        obj += "v " + std::to_string(std::cos(angle)) + " 0 " + std::to_string(std::sin(angle)) + "\n";
+    }
+    obj += "v 5 5 5\n";
+    for (int i = 0; i < sides; ++i) obj += "f 1 " + std::to_string(2 + (i + 1) % sides) + " " + std::to_string(2 + i) + "\n";
+    obj += "f 2 2 3\n";
+    folder.write("cone.obj", obj);
+    folder.write("textured.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+    const Manifest manifest =
+        parse_manifest("{\"mesh\": \"cone.obj\", \"size\": \"40x30\"}\n"
+                       "{\"mesh\": \"cone.obj\", \"views\": 3, \"elevation\": 20, \"size\": \"40x30\", \"output\": \"t{view}.png\"}\n"
+                       "{\"mesh\": \"cone.obj\", \"size\": \"40x30\", \"shader\": \"gouraud\", \"output\": \"g.png\"}\n"
+                       "{\"mesh\": \"textured.obj\", \"size\": \"40x30\"}\n",
+                       "jobs.jsonl", folder.file(""), JobSettings{});
+    MeshFileCache meshes;
+    Renderer renderer;
+    for (std::size_t j = 0; j < 3; ++j) {
+        INFO("job " << j);
+        JobScenes scenes = load_job(manifest.jobs[j], 0, &meshes);
+        const Mesh& mesh = scenes.prepared.scene.mesh;
+        REQUIRE(mesh.normals == calculate_normals(mesh));
+        CHECK(mesh.normals.back() == glm::vec3(0.0f));  // the unused vertex
+        // Each view's picture is the one drawn from the mesh without normals, bit for bit.
+        Scene without = scenes.prepared.scene;
+        without.mesh.normals.clear();
+        renderer.set_options(scenes.prepared.options);
+        for (std::size_t view = 0; view < scenes.cameras.size(); ++view) {
+            scenes.prepared.scene.camera = without.camera = scenes.cameras[view];
+            scenes.prepared.scene.lights = without.lights = scenes.lights[view];
+            const Image given = renderer.render(scenes.prepared.scene).image;
+            const Image computed = renderer.render(without).image;
+            CHECK(given.pixels == computed.pixels);
+        }
+    }
+    CHECK(meshes.parses() == 1);
+    CHECK(meshes.normals_computed() == 1);
+    // Contract version 2 (here texture coordinates): assembly computes its own, none are given.
+    CHECK(load_job(manifest.jobs[3], 0, &meshes).prepared.scene.mesh.normals.empty());
+    CHECK(meshes.normals_computed() == 1);
+    // Without the cache the renderer computes them, as `render` does.
+    CHECK(load_job(manifest.jobs[0], 0).prepared.scene.mesh.normals.empty());
 }
