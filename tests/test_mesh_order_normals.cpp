@@ -18,6 +18,7 @@
 
 #include "mesh_order.hpp"
 #include "normals.hpp"
+#include "shuffled_mesh.hpp"
 #include "test_meshes.hpp"
 
 using namespace phongrast;
@@ -64,16 +65,7 @@ AwkwardMesh awkward_mesh(unsigned seed, bool far_points = false) {
     mesh = test_meshes::icosphere(60, 0.08);
     mesh.colors.clear();
     std::mt19937 random(seed);
-    std::shuffle(mesh.triangles.begin(), mesh.triangles.end(), random);
-    std::vector<std::uint32_t> target(mesh.positions.size());
-    std::iota(target.begin(), target.end(), 0u);
-    std::shuffle(target.begin(), target.end(), random);
-    std::vector<glm::dvec3> positions(mesh.positions.size());
-    for (std::size_t v = 0; v < target.size(); ++v) positions[target[v]] = mesh.positions[v];
-    mesh.positions = positions;
-    for (Triangle& tri : mesh.triangles) {
-        for (std::uint32_t& index : tri) index = target[index];
-    }
+    test_meshes_order::shuffle_faces_and_vertices(mesh, random);
     const auto add = [&](glm::dvec3 p) {
         mesh.positions.push_back(p);
         return static_cast<std::uint32_t>(mesh.positions.size() - 1);

@@ -15,6 +15,7 @@
 
 #include "phongrast/lighting.hpp"
 #include "phongrast/mesh.hpp"
+#include "shuffled_mesh.hpp"
 #include "test_meshes.hpp"
 
 using namespace phongrast;
@@ -64,16 +65,7 @@ bool same_bits(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
 Mesh awkward_mesh() {
     Mesh mesh = test_meshes::icosphere(60, 0.08);
     std::mt19937 random(3);
-    std::shuffle(mesh.triangles.begin(), mesh.triangles.end(), random);
-    std::vector<std::uint32_t> target(mesh.positions.size());
-    std::iota(target.begin(), target.end(), 0u);
-    std::shuffle(target.begin(), target.end(), random);
-    std::vector<glm::dvec3> positions(mesh.positions.size());
-    for (std::size_t v = 0; v < target.size(); ++v) positions[target[v]] = mesh.positions[v];
-    mesh.positions = positions;
-    for (Triangle& tri : mesh.triangles) {
-        for (std::uint32_t& index : tri) index = target[index];
-    }
+    test_meshes_order::shuffle_faces_and_vertices(mesh, random);
     const auto add = [&](glm::dvec3 p) {
         mesh.positions.push_back(p);
         return static_cast<std::uint32_t>(mesh.positions.size() - 1);

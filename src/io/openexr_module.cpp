@@ -20,6 +20,20 @@ void set_error(char* error, std::size_t size, const char* message) {
     if (error != nullptr && size > 0) std::snprintf(error, size, "%s", message);
 }
 
+/// Runs `work` and returns its result; an exception (none may cross the C
+/// table) becomes its message in `error` and the result `failed`.
+template <typename Result, typename Work>
+Result guarded(Result failed, char* error, std::size_t error_size, Work&& work) {
+    try {
+        return work();
+    } catch (const std::exception& failure) {
+        set_error(error, error_size, failure.what());
+    } catch (...) {
+        set_error(error, error_size, "unknown error");
+    }
+    return failed;
+}
+
 Imf::PixelType pixel_type(const PhongrastExrChannel& channel) {
     return channel.unsigned_int != 0 ? Imf::UINT : Imf::FLOAT;
 }
@@ -46,7 +60,7 @@ struct Reader {
 
 int write(const char* file, int columns, int rows, const PhongrastExrChannel* channels, std::size_t count,
           char* error, std::size_t error_size) {
-    try {
+    return guarded(1, error, error_size, [&] {
         Imf::Header header(columns, rows);
         header.compression() = Imf::ZIP_COMPRESSION;
         for (std::size_t i = 0; i < count; ++i) {
@@ -56,16 +70,11 @@ int write(const char* file, int columns, int rows, const PhongrastExrChannel* ch
         output.setFrameBuffer(frame_buffer(channels, count, columns, 0, 0));
         output.writePixels(rows);
         return 0;
-    } catch (const std::exception& failure) {
-        set_error(error, error_size, failure.what());
-    } catch (...) {
-        set_error(error, error_size, "unknown error");
-    }
-    return 1;
+    });
 }
 
 void* open(const char* file, int* columns, int* rows, char* error, std::size_t error_size) {
-    try {
+    return guarded<void*>(nullptr, error, error_size, [&]() -> void* {
         auto reader = std::make_unique<Reader>(file);
         const Imath::Box2i window = reader->input.header().dataWindow();
         *columns = window.max.x - window.min.x + 1;
@@ -73,12 +82,7 @@ void* open(const char* file, int* columns, int* rows, char* error, std::size_t e
         const Imf::ChannelList& list = reader->input.header().channels();
         for (auto it = list.begin(); it != list.end(); ++it) reader->names.push_back(it.name());
         return reader.release();
-    } catch (const std::exception& failure) {
-        set_error(error, error_size, failure.what());
-    } catch (...) {
-        set_error(error, error_size, "unknown error");
-    }
-    return nullptr;
+    });
 }
 
 std::size_t channel_count(void* handle) { return static_cast<Reader*>(handle)->names.size(); }
@@ -88,19 +92,14 @@ const char* channel_name(void* handle, std::size_t index) {
 }
 
 int read(void* handle, const PhongrastExrChannel* channels, std::size_t count, char* error, std::size_t error_size) {
-    try {
+    return guarded(1, error, error_size, [&] {
         Imf::InputFile& input = static_cast<Reader*>(handle)->input;
         const Imath::Box2i window = input.header().dataWindow();
         const int columns = window.max.x - window.min.x + 1;
         input.setFrameBuffer(frame_buffer(channels, count, columns, window.min.x, window.min.y));
         input.readPixels(window.min.y, window.max.y);
         return 0;
-    } catch (const std::exception& failure) {
-        set_error(error, error_size, failure.what());
-    } catch (...) {
-        set_error(error, error_size, "unknown error");
-    }
-    return 1;
+    });
 }
 
 void close(void* handle) { delete static_cast<Reader*>(handle); }
