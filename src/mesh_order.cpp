@@ -321,13 +321,7 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
         normals_in_caller_order(mesh, order, poll);
     } else if (needed && has_zero_normal(mesh.normals)) {
         normals_in_caller_order(mesh, order, poll);
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.normals.size(), kGatherBlock),
-                          [&](const tbb::blocked_range<std::size_t>& range) {
-            for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                const glm::vec3& given = mesh.normals[order.vertex_source[v]];
-                if (given != glm::vec3(0.0f)) out.normals[v] = given;
-            }
-        });
+        keep_given_normals(mesh.normals, order.vertex_source, out.normals);
     } else {
         gather(mesh.normals, order.vertex_source, out.normals, poll);
     }

@@ -170,6 +170,17 @@ void keep_given_normals(const std::vector<glm::vec3>& given, std::vector<glm::ve
     }
 }
 
+void keep_given_normals(const std::vector<glm::vec3>& given, const std::vector<std::uint32_t>& source,
+                        std::vector<glm::vec3>& computed) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, computed.size(), kBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t v = range.begin(); v != range.end(); ++v) {
+            const glm::vec3& normal = given[source[v]];
+            if (normal != glm::vec3(0.0f)) computed[v] = normal;
+        }
+    });
+}
+
 }  // namespace detail
 
 std::vector<glm::vec3> calculate_normals(const std::vector<glm::dvec3>& positions,

@@ -59,6 +59,11 @@ bool has_zero_normal(const std::vector<glm::vec3>& normals);
 /// computed[i] = given[i] wherever given[i] is not zero: a zero user normal
 /// takes the computed one (as a zero file normal does in the contract).
 void keep_given_normals(const std::vector<glm::vec3>& given, std::vector<glm::vec3>& computed);
+/// The same for a reordered copy: computed[v] = given[source[v]] wherever
+/// that is not zero (mesh_order.cpp: `source` maps the copy's vertices to
+/// the caller's), in parallel.
+void keep_given_normals(const std::vector<glm::vec3>& given, const std::vector<std::uint32_t>& source,
+                        std::vector<glm::vec3>& computed);
 
 }  // namespace phongrast::detail
 
