@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "interrupt.hpp"
+#include "process_heap.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/version.hpp"
 
@@ -52,6 +53,9 @@ int main(int argc, char** argv) {
         std::cout << "phongrast " PHONGRAST_VERSION_STRING "\n";  // as CLI11's version flag prints it
         return 0;
     }
+    // A process that renders once pays for every fresh page it writes; batch
+    // (long-running, its own memory rules) keeps malloc's defaults.
+    if (named == "render" || named == "thumbnail" || named == "sheet" || named == "generate") prepare_one_off_heap();
     for (const auto& [name, add] : commands) {
         if (any || named == name) add();
     }

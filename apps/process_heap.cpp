@@ -1,0 +1,48 @@
+#include "process_heap.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
+namespace phongrast::cli {
+
+void prepare_one_off_heap() {
+#if defined(__GLIBC__) && defined(MADV_HUGEPAGE)
+    constexpr std::size_t kMiB = std::size_t(1) << 20;
+    constexpr std::size_t kHugePage = 2 * kMiB;
+    constexpr std::size_t kHugeHeap = 32 * kMiB;
+    // The values glibc's own sliding threshold reaches after the first large
+    // free (mmap threshold 32 MiB, trim threshold twice that), set from the
+    // start: a one-off process frees few buffers, so it never got there, and
+    // every buffer over 128 KiB was a fresh mapping. Larger buffers (large
+    // meshes) are still mapped apart and returned on free, as before.
+    mallopt(M_MMAP_THRESHOLD, static_cast<int>(kHugeHeap));
+    mallopt(M_TRIM_THRESHOLD, static_cast<int>(2 * kHugeHeap));
+    // oneTBB's worker threads would otherwise allocate from arenas of their
+    // own (64 MiB mappings, 4 KiB pages); two cores' worth of threads share one lock.
+    mallopt(M_ARENA_MAX, 1);
+    // Grow the heap by kHugeHeap once (address space only: nothing is
+    // touched), advise the 2 MiB-aligned part, and give it back to malloc as
+    // free space at the top of the heap, which the trim threshold keeps.
+    void* block = std::malloc(kHugeHeap - kHugePage);
+    if (block == nullptr) return;
+    const auto begin = reinterpret_cast<std::uintptr_t>(block);
+    const auto end = reinterpret_cast<std::uintptr_t>(sbrk(0));
+    const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
+    const std::uintptr_t last = end & ~(kHugePage - 1);
+    // Only when the block came from the heap just below the break (not a
+    // mapping of its own, not a heap that could not grow in place).
+    if (end >= begin && end - begin <= kHugeHeap + kHugePage && last > first) {
+        madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // advice: failure changes nothing
+    }
+    std::free(block);
+#endif
+}
+
+}  // namespace phongrast::cli
