@@ -38,10 +38,19 @@ void prepare_one_off_heap() {
     const std::uintptr_t last = end & ~(kHugePage - 1);
     // Only when the block came from the heap just below the break (not a
     // mapping of its own, not a heap that could not grow in place).
-    if (end >= begin && end - begin <= kHugeHeap + kHugePage && last > first) {
-        madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // advice: failure changes nothing
+    if (!(end >= begin && end - begin <= kHugeHeap + kHugePage && last > first)) {
+        std::free(block);
+        return;
     }
+    madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // advice: failure changes nothing
     std::free(block);
+    // malloc hands out the free top from its start: hold the part below the
+    // first 2 MiB boundary (never touched beyond its header; it is the
+    // process's, freed at exit), so that the buffers start on huge pages.
+    constexpr std::size_t kHeader = 2 * sizeof(std::size_t);
+    if (first - begin > 4 * kHeader) {
+        [[maybe_unused]] static void* const below_first_huge_page = std::malloc(first - begin - kHeader);
+    }
 #endif
 }
 
