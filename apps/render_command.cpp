@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "interrupt.hpp"
+#include "process_exit.hpp"
 #include "phongrast/io/aov_file.hpp"
 #include "phongrast/io/camera_record.hpp"
 #include "phongrast/io/dataset_files.hpp"
@@ -169,7 +170,7 @@ int run_render(const RenderCommand& command) {
                                                     prepared.scene, output, command.camera_out)}));
         messages.result("wrote " + std::filesystem::absolute(command.camera_out).lexically_normal().string());
     }
-    return 0;
+    return end_one_off_process(0);
 }
 
 }  // namespace phongrast::cli

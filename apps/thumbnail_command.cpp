@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "commands.hpp"
+#include "process_exit.hpp"
 #include "phongrast/io/aov_file.hpp"
 #include "phongrast/io/error.hpp"
 #include "phongrast/io/image_file.hpp"
@@ -52,7 +53,7 @@ int run_thumbnail(const ThumbnailCommand& command) {
     if (png_name) {
         io::write_png_with_alpha(result.image, result.aovs.alpha, prepared.scene.image.background, command.output,
                                  options);
-        return 0;
+        return end_one_off_process(0);
     }
     const std::string staged = command.output + ".png";
     io::write_png_with_alpha(result.image, result.aovs.alpha, prepared.scene.image.background, staged, options);
@@ -61,7 +62,7 @@ int run_thumbnail(const ThumbnailCommand& command) {
         std::remove(staged.c_str());
         throw io::FileError(command.output + ": cannot write: " + why);
     }
-    return 0;
+    return end_one_off_process(0);
 }
 
 }  // namespace phongrast::cli
