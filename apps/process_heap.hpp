@@ -7,10 +7,10 @@ namespace phongrast::cli {
 /// Sets glibc's malloc up for a short process that reads a mesh, renders
 /// and writes an image (render, thumbnail, sheet, generate): buffers up to
 /// 32 MiB come from the heap (not fresh mappings per buffer, unmapped again
-/// on free), every thread allocates from that one heap, and its first
-/// 32 MiB is advised as transparent huge pages, so that the first writes to
-/// the reader's, renderer's and encoder's buffers fault once per 2 MiB
-/// instead of once per 4 KiB page (about 5 us each on a virtual machine).
+/// on free), and the heap's first 32 MiB is advised as transparent huge
+/// pages, so that the first writes to the reader's, renderer's and encoder's
+/// buffers (on the main thread) fault once per 2 MiB instead of once per
+/// 4 KiB page (about 5 us each on a virtual machine).
 /// Called first thing in main: a command's setting, never the library's
 /// (a library must not change its host's malloc). Does nothing where
 /// glibc's mallopt or MADV_HUGEPAGE is missing; the pictures do not change.
