@@ -11,6 +11,15 @@
 #endif
 
 namespace phongrast::cli {
+namespace {
+
+/// The block held below the first huge page. Stored where the compiler must
+/// keep it: a malloc whose result is never used may be left out (GCC does),
+/// and so may a malloc and free of a block that goes nowhere else.
+void* volatile held_below_huge_pages = nullptr;
+void* volatile grown = nullptr;
+
+}  // namespace
 
 void prepare_one_off_heap() {
 #if defined(__GLIBC__) && defined(MADV_HUGEPAGE)
@@ -30,7 +39,8 @@ void prepare_one_off_heap() {
     // Grow the heap by kHugeHeap once (address space only: nothing is
     // touched), advise the 2 MiB-aligned part, and give it back to malloc as
     // free space at the top of the heap, which the trim threshold keeps.
-    void* block = std::malloc(kHugeHeap - kHugePage);
+    grown = std::malloc(kHugeHeap - kHugePage);
+    void* const block = grown;
     if (block == nullptr) return;
     const auto begin = reinterpret_cast<std::uintptr_t>(block);
     const auto end = reinterpret_cast<std::uintptr_t>(sbrk(0));
@@ -48,8 +58,8 @@ void prepare_one_off_heap() {
     // first 2 MiB boundary (never touched beyond its header; it is the
     // process's, freed at exit), so that the buffers start on huge pages.
     constexpr std::size_t kHeader = 2 * sizeof(std::size_t);
-    if (first - begin > 4 * kHeader) {
-        [[maybe_unused]] static void* const below_first_huge_page = std::malloc(first - begin - kHeader);
+    if (first - begin > 4 * kHeader && held_below_huge_pages == nullptr) {
+        held_below_huge_pages = std::malloc(first - begin - kHeader);
     }
 #endif
 }

@@ -1,0 +1,82 @@
+// The command's malloc set-up for one-off processes (apps/process_heap.cpp):
+// a buffer of a few MiB comes from the heap, on memory advised as huge
+// pages, and a buffer over 32 MiB is still a mapping of its own. Its own
+// test program: the set-up changes malloc for the whole process.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "process_heap.hpp"
+
+namespace {
+
+/// The /proc/self/smaps entry holding `address`: its name ("[heap]", a file, or
+/// empty) and its VmFlags ("rd wr mr ... hg"); found false when none holds it.
+struct Mapping {
+    bool found = false;
+    std::string name;
+    std::string flags;
+};
+
+Mapping mapping_of(const void* address) {
+    const auto at = reinterpret_cast<std::uintptr_t>(address);
+    std::ifstream smaps("/proc/self/smaps");
+    Mapping mapping;
+    bool inside = false;
+    for (std::string line; std::getline(smaps, line);) {
+        std::uintptr_t begin = 0, end = 0;
+        char dash = 0;
+        std::istringstream words(line);
+        if (words >> std::hex >> begin >> dash >> end && dash == '-' && line.find(':') > line.find(' ')) {
+            if (inside) return mapping;  // the holding entry ended without VmFlags
+            inside = begin <= at && at < end;
+            if (inside) {
+                std::string perms, offset, device, inode;
+                words >> perms >> offset >> device >> inode;
+                std::getline(words >> std::ws, mapping.name);
+                mapping.found = true;
+            }
+        } else if (inside && line.rfind("VmFlags:", 0) == 0) {
+            mapping.flags = line.substr(8) + " ";
+            return mapping;
+        }
+    }
+    return mapping;
+}
+
+}  // namespace
+
+TEST_CASE("prepare_one_off_heap: MiB buffers on the heap's huge pages, large ones mapped apart") {
+#if !defined(__GLIBC__) || !defined(__linux__)
+    SUCCEED("skipped: the set-up is glibc's malloc on Linux only");
+#else
+    if (!std::ifstream("/proc/self/smaps")) {
+        SUCCEED("skipped: no /proc/self/smaps to check the mappings with");
+        return;
+    }
+    constexpr std::size_t kMiB = std::size_t(1) << 20;
+    phongrast::cli::prepare_one_off_heap();
+    // Without the set-up, glibc maps every block over 128 KiB apart.
+    void* buffer = std::malloc(3 * kMiB);
+    REQUIRE(buffer != nullptr);
+    std::memset(buffer, 1, 3 * kMiB);
+    const Mapping heap = mapping_of(buffer);
+    REQUIRE(heap.found);
+    CHECK(heap.name == "[heap]");
+    INFO("VmFlags: " << heap.flags);
+    CHECK(heap.flags.find(" hg ") != std::string::npos);  // MADV_HUGEPAGE
+
+    void* large = std::malloc(40 * kMiB);  // over the 32 MiB threshold
+    REQUIRE(large != nullptr);
+    const Mapping apart = mapping_of(large);
+    REQUIRE(apart.found);
+    CHECK(apart.name.empty());  // an anonymous mapping of its own, returned on free
+    std::free(large);
+    std::free(buffer);
+#endif
+}
