@@ -1,6 +1,7 @@
 #include "fill_driver.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 #include <tbb/parallel_for.h>
@@ -140,6 +141,21 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     return plan;
 }
 
+namespace {
+
+/// Writes `colour` to `count` pixels four at a time (48 bytes from a local
+/// pattern: three 16-byte stores), where std::fill of 12-byte elements stores
+/// 8 + 4 bytes per pixel and reloads the colour each time, since the image
+/// might alias it: 9% of a 512x512 frame of a small mesh at one thread.
+void fill_pixels(glm::vec3* out, std::size_t count, glm::vec3 colour) {
+    const glm::vec3 pattern[4] = {colour, colour, colour, colour};
+    std::size_t i = 0;
+    for (; i + 4 <= count; i += 4) std::memcpy(out + i, pattern, sizeof pattern);
+    for (; i < count; ++i) out[i] = colour;
+}
+
+}  // namespace
+
 template <typename Real>
 void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<Real>& plan, const Bins<Real>& bins,
                int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats,
@@ -156,7 +172,7 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
                                 plan.depth_test, 0, 0};
         const std::size_t band_start = static_cast<std::size_t>(target.row_begin) * static_cast<std::size_t>(columns);
         const std::size_t band_end = static_cast<std::size_t>(target.row_end) * static_cast<std::size_t>(columns);
-        std::fill(image.pixels.begin() + band_start, image.pixels.begin() + band_end, scene.image.background);
+        fill_pixels(image.pixels.data() + band_start, band_end - band_start, scene.image.background);
         LightVectorsAt<Real>& vectors = memory.band_vectors[band];
         memory.covered[band] =
             plan.shade_visible_only

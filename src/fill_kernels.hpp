@@ -181,43 +181,55 @@ constexpr int kMinLanesSpan = 8;
 /// weights would cost more than they save; measured on the teapot).
 struct NoLanes {};
 
+/// Lanes a batch's loops run over: the batch's samples rounded up to a whole
+/// number of vector groups (8 floats for AVX2), so that each loop is whole
+/// vectors with no remainder code, whose branches on the varying span
+/// lengths cost more than the few lanes computed for nothing.
+constexpr int kLaneGroup = 8;
+inline int padded_lanes(int n) { return (n + kLaneGroup - 1) / kLaneGroup * kLaneGroup; }
+static_assert(kSampleBatch % kLaneGroup == 0, "a batch is whole lane groups");
+
 /// Shades `count` samples of one span, starting at `pixels`, in batches:
 /// the weights of sample k are fill_samples()'s (q + dq k, renormalised when
 /// perspective-correct: the same operations in the same order, lane by
 /// lane), then shade_lanes(n, w, out), then the pixels are written as
-/// fill_samples() writes them. All lanes finite (the case that should always
-/// hold) is checked in a vector loop first. Out of line, so that the
-/// sample-by-sample loop of the short spans keeps its registers.
+/// fill_samples() writes them. The lanes past the span's end (up to
+/// padded_lanes()) are computed like the others and never read: whatever
+/// they hold (their weights may even divide by zero) is neither written nor
+/// counted. All lanes finite (the case that should always hold) is checked
+/// in a vector loop first. Out of line, so that the sample-by-sample loop of
+/// the short spans keeps its registers.
 template <typename Real, bool Perspective, typename ShadeLanes>
 PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count, glm::vec3* pixels,
                                            std::uint64_t& replaced, ShadeLanes& shade_lanes) {
     Lanes<Real> w[3], out[3];
     for (int start = 0; start < count; start += kSampleBatch) {
         const int n = std::min(kSampleBatch, count - start);
-        for (int l = 0; l < n; ++l) {
+        const int lanes = padded_lanes(n);
+        for (int l = 0; l < lanes; ++l) {
             const Real step_count = static_cast<Real>(start + l);
             w[0][l] = q[0] + dq[0] * step_count;
             w[1][l] = q[1] + dq[1] * step_count;
             w[2][l] = q[2] + dq[2] * step_count;
         }
         if constexpr (Perspective) {
-            for (int l = 0; l < n; ++l) {
+            for (int l = 0; l < lanes; ++l) {
                 const Real depth = Real(1) / (w[0][l] + w[1][l] + w[2][l]);
                 w[0][l] *= depth;
                 w[1][l] *= depth;
                 w[2][l] *= depth;
             }
         }
-        shade_lanes(n, static_cast<const Lanes<Real>*>(w), out);
+        shade_lanes(lanes, static_cast<const Lanes<Real>*>(w), out);
         float channel[3][kSampleBatch];
         int nonfinite = 0;
-        for (int l = 0; l < n; ++l) {
+        for (int l = 0; l < lanes; ++l) {
             channel[0][l] = static_cast<float>(out[0][l]);
             channel[1][l] = static_cast<float>(out[1][l]);
             channel[2][l] = static_cast<float>(out[2][l]);
             // std::isfinite(sum), as finite_or_replaced() asks, written as a compare that vectorises.
             const float sum = channel[0][l] + channel[1][l] + channel[2][l];
-            nonfinite |= !(std::abs(sum) <= std::numeric_limits<float>::max());
+            nonfinite |= int(l < n) & int(!(std::abs(sum) <= std::numeric_limits<float>::max()));
         }
         glm::vec3* batch_pixels = pixels + start;
         if (nonfinite == 0) {
