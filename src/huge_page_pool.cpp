@@ -48,12 +48,24 @@ HugePagePool::~HugePagePool() {
     for (const Mapping& mapping : mappings_) system_.unmap(mapping.base, mapping.bytes);
 }
 
+bool HugePagePool::available() {
+    if (availability_ < 0) availability_ = system_.huge_pages_available() ? 1 : 0;
+    return availability_ == 1;
+}
+
+bool HugePagePool::advise(void* begin, std::size_t bytes) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!available()) return false;
+    if (system_.advise_huge_pages(begin, bytes)) return true;
+    availability_ = 0;
+    return false;
+}
+
 void* HugePagePool::allocate(std::size_t bytes) {
     if (bytes < kMinBlock || bytes > kMaxBlock) return nullptr;
     const std::size_t size = round_up(bytes, kBlockAlignment);
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (availability_ < 0) availability_ = system_.huge_pages_available() ? 1 : 0;
-    if (availability_ == 0) return nullptr;
+    if (!available()) return nullptr;
     for (Mapping& mapping : mappings_) {
         if (void* block = take(mapping, size)) return block;
     }

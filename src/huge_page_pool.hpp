@@ -38,12 +38,15 @@
 #define PHONGRAST_SRC_HUGE_PAGE_POOL_HPP
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <new>
 #include <vector>
+
+#include "populate_pages.hpp"
 
 namespace phongrast::detail {
 
@@ -88,6 +91,10 @@ public:
     bool deallocate(void* block, std::size_t bytes) noexcept;
     /// Whether `address` lies in one of the pool's mappings.
     bool owns(const void* address) const;
+    /// madvise(MADV_HUGEPAGE) of [begin, begin + bytes), memory of the
+    /// caller's (reserve_on_huge_pages): false, and nothing done, where the
+    /// pool cannot have huge pages.
+    bool advise(void* begin, std::size_t bytes);
 
     /// For tests: the mappings held, and whether the pool has given up (mmap or madvise failed, or THP off).
     std::size_t mappings() const;
@@ -102,6 +109,7 @@ private:
         std::map<std::size_t, std::size_t> holes;  ///< freed blocks below `top`: offset -> bytes, coalesced
     };
 
+    bool available();  ///< with mutex_ held
     void* take(Mapping& mapping, std::size_t bytes);
     bool map_another(std::size_t bytes);
 
@@ -152,6 +160,41 @@ bool operator!=(const HugePageAllocator<T>&, const HugePageAllocator<U>&) noexce
 /// kMinBlock and kMaxBlock, lies on huge pages.
 template <typename T>
 using FrameVector = std::vector<T, HugePageAllocator<T>>;
+
+/// For a buffer that must stay a std::vector with std::allocator (Image's
+/// pixels, a public type): values.reserve(size), with a slack of 2 MiB when
+/// `size` elements take 2 MiB to kMaxBlock, so that the new part's end lies
+/// inside a whole 2 MiB-aligned page of the buffer; those whole pages are
+/// advised MADV_HUGEPAGE, the rest (a head of under 2 MiB) populated
+/// (populate_pages.hpp). malloc places such a block 4 KiB-aligned, so the
+/// head cannot be a huge page: on average 2 MiB of a 3 MiB image is.
+/// Memory: the part of the last huge page past `size`, up to 2 MiB,
+/// becomes resident with it. Outside that range of sizes, or without huge
+/// pages: reserve_populated() (4 KiB pages mapped ahead), as before.
+/// Returns whether the vector grew (its new part then needs no populating).
+template <typename T>
+bool reserve_on_huge_pages(std::vector<T>& values, std::size_t size) {
+    constexpr std::size_t kHuge = HugePagePool::kHugePage;
+    if (size <= values.capacity()) return false;
+    const std::size_t bytes = size * sizeof(T);
+    if (bytes < kHuge || bytes > HugePagePool::kMaxBlock) {
+        reserve_populated(values, size);
+        return true;
+    }
+    values.reserve(size + (kHuge + sizeof(T) - 1) / sizeof(T));
+    const auto round_up = [](std::uintptr_t a) { return (a + kHuge - 1) / kHuge * kHuge; };
+    const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(values.data() + values.size());
+    const std::uintptr_t huge_begin = round_up(begin);
+    const std::uintptr_t huge_end = round_up(reinterpret_cast<std::uintptr_t>(values.data() + size));
+    // huge_end <= the buffer's end: the slack is at least 2 MiB.
+    if (huge_end > huge_begin &&
+        huge_page_pool().advise(reinterpret_cast<void*>(huge_begin), huge_end - huge_begin)) {
+        populate_for_writing(values.data() + values.size(), huge_begin - begin);
+    } else {
+        populate_for_writing(values.data() + values.size(), (values.capacity() - values.size()) * sizeof(T));
+    }
+    return true;
+}
 
 }  // namespace phongrast::detail
 

@@ -19,8 +19,10 @@ namespace phongrast::detail {
 /// between (so Ctrl-C in Python waited that long). The contents end up the
 /// same as one resize's; shrinking is one resize. Each step's new pages are
 /// mapped in one call first (populate_pages.hpp).
+/// `populate` false: the caller has mapped or advised the new part already (reserve_on_huge_pages).
 template <typename T, typename A>
-void resize_polling(std::vector<T, A>& values, std::size_t size, const std::function<void()>& poll) {
+void resize_polling(std::vector<T, A>& values, std::size_t size, const std::function<void()>& poll,
+                    bool populate = true) {
     if (size <= values.size()) {
         values.resize(size);
         return;
@@ -30,7 +32,7 @@ void resize_polling(std::vector<T, A>& values, std::size_t size, const std::func
     const std::size_t step = std::max<std::size_t>(1, kStepBytes / sizeof(T));
     while (values.size() < size) {
         const std::size_t next = std::min(size, values.size() + step);
-        populate_for_writing_in<A>(values.data() + values.size(), (next - values.size()) * sizeof(T));
+        if (populate) populate_for_writing_in<A>(values.data() + values.size(), (next - values.size()) * sizeof(T));
         values.resize(next);
         if (poll) poll();
     }

@@ -229,3 +229,23 @@ TEST_CASE("FrameVector: a vector whatever its memory, values kept as it grows ac
         if (pooled) CHECK_FALSE(populate_for_writing_in<HugePageAllocator<double>>(grown.data(), 4 * kMiB));
     }
 }
+
+TEST_CASE("reserve_on_huge_pages: a std::vector grown with room for its end's whole 2 MiB page, values kept") {
+    std::vector<float> values(1000);
+    std::iota(values.begin(), values.end(), 0.0f);
+    const std::size_t size = 3 * kMiB / sizeof(float);  // a 512x512 float RGB image's bytes
+    CHECK(reserve_on_huge_pages(values, size));
+    REQUIRE(values.size() == 1000);
+    CHECK(values[999] == 999.0f);
+    // The slack: the page holding the new part's end lies inside the buffer (or, without huge pages, exactly size).
+    CHECK(values.capacity() >= size);
+    if (system_has_huge_pages()) CHECK(values.capacity() >= size + HugePagePool::kHugePage / sizeof(float));
+    values.resize(size, 7.0f);
+    CHECK(values[1000] == 7.0f);
+    CHECK(values.back() == 7.0f);
+    CHECK_FALSE(reserve_on_huge_pages(values, size));  // room already: nothing done
+    // Outside [2 MiB, kMaxBlock]: an exact reserve, mapped ahead as before.
+    std::vector<float> small;
+    CHECK(reserve_on_huge_pages(small, 1000));
+    CHECK(small.capacity() == 1000);
+}
