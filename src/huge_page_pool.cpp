@@ -7,6 +7,7 @@
 #include <iterator>
 
 #if defined(__linux__)
+#include <pthread.h>
 #include <sys/mman.h>
 #endif
 
@@ -174,7 +175,16 @@ bool HugePagePool::disabled() const {
 }
 
 HugePagePool& huge_page_pool() {
-    static HugePagePool* const pool = new HugePagePool();
+    static HugePagePool* const pool = [] {
+        auto* made = new HugePagePool();
+#if defined(__linux__)
+        // A fork while another thread holds the lock would leave the child
+        // a lock nobody releases: hold it across the fork, as malloc does.
+        pthread_atfork([] { huge_page_pool().lock_for_fork(); }, [] { huge_page_pool().unlock_after_fork(); },
+                       [] { huge_page_pool().unlock_after_fork(); });
+#endif
+        return made;
+    }();
     return *pool;
 }
 

@@ -96,6 +96,10 @@ public:
     /// pool cannot have huge pages.
     bool advise(void* begin, std::size_t bytes);
 
+    /// Held across fork() (pthread_atfork in huge_page_pool()).
+    void lock_for_fork() { mutex_.lock(); }
+    void unlock_after_fork() { mutex_.unlock(); }
+
     /// For tests: the mappings held, and whether the pool has given up (mmap or madvise failed, or THP off).
     std::size_t mappings() const;
     bool disabled() const;
