@@ -38,7 +38,7 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
     glm::vec3 flat_normal(0.0f);
     if (planes.normal && in.shader == Shader::flat) {
         const Triangle& tri = (*in.triangles)[source];
-        const std::vector<Varyings<Real>>& vertices = *in.vertices;
+        const FrameVector<Varyings<Real>>& vertices = *in.vertices;
         flat_normal = world_from_camera(*in.frame, safe_normalize<Real>(vertices[tri[0]].normal +
                                                                         vertices[tri[1]].normal +
                                                                         vertices[tri[2]].normal));

@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "binning.hpp"
+#include "huge_page_pool.hpp"
 #include "fill_types.hpp"
 #include "phongrast/aov.hpp"
 #include "phongrast/camera.hpp"
@@ -44,7 +45,7 @@ struct AovPassInput {
     bool perspective = true;              ///< the shading's weights are perspective-correct
     const Real* depth_buffer = nullptr;   ///< the colour fill's final depths with Visibility::depth_buffer, else null
     const std::vector<Triangle>* triangles = nullptr;
-    const std::vector<Varyings<Real>>* vertices = nullptr;  ///< camera-space varyings, by mesh vertex
+    const FrameVector<Varyings<Real>>* vertices = nullptr;  ///< camera-space varyings, by mesh vertex
     const CameraFrame* frame = nullptr;
     /// The pass's sample offset (View::sample_offset): sample (row, column) lies at the frame's
     /// pixel coordinates (column + 0.5 + offset.x, row + 0.5 + offset.y), where the distance's ray goes.

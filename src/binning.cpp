@@ -56,7 +56,7 @@ void bin_draws(const DrawList<Real>& draws, const PainterOrderMemory& painter, i
                Bins<Real>& bins, const std::function<void()>& poll) {
     bins.bands = (rows + kBandRows - 1) / kBandRows;
     const std::size_t bands = static_cast<std::size_t>(bins.bands);
-    const std::vector<PaintRecord>& sorted = painter.sorted;
+    const FrameVector<PaintRecord>& sorted = painter.sorted;
     const std::size_t blocks = (sorted.size() + kBinningBlock - 1) / kBinningBlock;
     // Calls visit(band, draw) for every draw of block `block`, in painter's order.
     const auto for_each_draw_of_block = [&](std::size_t block, auto&& visit) {

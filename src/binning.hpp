@@ -19,7 +19,7 @@ template <typename Real>
 struct Bins {
     int bands = 0;
     std::vector<std::uint32_t> band_start;          ///< bands + 1 offsets into `draws`
-    std::vector<const FillTriangle<Real>*> draws;   ///< band after band
+    FrameVector<const FillTriangle<Real>*> draws;   ///< band after band (huge pages: huge_page_pool.hpp)
 
     const FillTriangle<Real>* const* band_draws(int band) const { return draws.data() + band_start[band]; }
     std::uint32_t band_size(int band) const { return band_start[band + 1] - band_start[band]; }

@@ -163,8 +163,10 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
     image.rows = rows;
     image.columns = columns;
     // Cleared band by band, in parallel, below: resizing writes only what a larger image adds.
-    resize_polling(image.pixels, static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns),
-                   progress.poll_function());
+    // A fresh image's whole 2 MiB pages on huge pages (Image is a public type: its vector keeps std::allocator).
+    const std::size_t samples = static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns);
+    const bool mapped = reserve_on_huge_pages(image.pixels, samples);
+    resize_polling(image.pixels, samples, progress.poll_function(), !mapped);
     prepare_memory(plan, bins.bands, image.pixels.size(), memory);
     tbb::parallel_for(0, bins.bands, [&](int band) {
         if (progress.cancelled()) return;

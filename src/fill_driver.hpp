@@ -9,6 +9,7 @@
 
 #include "binning.hpp"
 #include "fill_types.hpp"
+#include "huge_page_pool.hpp"
 #include "phongrast/image.hpp"
 #include "phongrast/render.hpp"
 #include "progress_monitor.hpp"
@@ -17,7 +18,7 @@ namespace phongrast::detail {
 
 /// Overdraw::shade_visible's scratch for one band of rows.
 struct VisibleLayer {
-    std::vector<std::uint32_t> owner;  ///< per sample of the band: its last triangle, or kNoOwner
+    FrameVector<std::uint32_t> owner;  ///< per sample of the band: its last triangle, or kNoOwner (huge pages)
     std::vector<std::uint8_t> shown;   ///< per triangle of the band: owns at least one sample
 };
 

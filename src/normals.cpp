@@ -24,10 +24,10 @@ constexpr std::size_t kBlock = 16384;
 
 /// Every face's cross product and its length, twice the face's area (w = -1:
 /// not finite, skipped), in parallel over triangles: scratch.faces.
-const std::vector<glm::dvec4>& compute_faces(const std::vector<glm::dvec3>& positions,
+const FrameVector<glm::dvec4>& compute_faces(const std::vector<glm::dvec3>& positions,
                                              const std::vector<Triangle>& triangles, NormalsScratch& scratch,
                                              const std::function<void()>& poll) {
-    std::vector<glm::dvec4>& faces = scratch.faces;
+    FrameVector<glm::dvec4>& faces = scratch.faces;
     resize_polling(faces, triangles.size(), poll);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), kBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
@@ -87,16 +87,16 @@ void calculate_normals_into(const std::vector<glm::dvec3>& positions, const std:
                             const std::function<void()>& poll) {
     const std::size_t vertex_count = positions.size(), triangle_count = triangles.size();
     // New scratch memory is filled with polls in between (resize_polling.hpp).
-    std::vector<glm::dvec3>& sums = scratch.sums;
+    FrameVector<glm::dvec3>& sums = scratch.sums;
     assign_polling(sums, vertex_count, glm::dvec3(0.0), poll);
     // For the fallback: each vertex's largest adjacent face (twice its area) and unit normal.
-    std::vector<double>& largest_area = scratch.largest_area;
+    FrameVector<double>& largest_area = scratch.largest_area;
     assign_polling(largest_area, vertex_count, 0.0, poll);
-    std::vector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
+    FrameVector<glm::dvec3>& largest_face_normal = scratch.largest_face_normal;
     assign_polling(largest_face_normal, vertex_count, glm::dvec3(0.0), poll);
     if (poll) poll();
 
-    const std::vector<glm::dvec4>& faces = compute_faces(positions, triangles, scratch, poll);
+    const FrameVector<glm::dvec4>& faces = compute_faces(positions, triangles, scratch, poll);
 
     const std::size_t ranges = std::max<std::size_t>(
         1, std::min<std::size_t>(static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
@@ -139,7 +139,7 @@ bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, cons
         corners.corners.size() != 3 * triangle_count || corners.first.back() != corners.corners.size()) {
         return false;
     }
-    const std::vector<glm::dvec4>& faces = compute_faces(positions, triangles, scratch, poll);
+    const FrameVector<glm::dvec4>& faces = compute_faces(positions, triangles, scratch, poll);
     resize_polling(normals, vertex_count, poll);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_count, kBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {

@@ -10,16 +10,17 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "huge_page_pool.hpp"
 #include "phongrast/mesh.hpp"
 
 namespace phongrast::detail {
 
-/// calculate_normals()'s working memory.
+/// calculate_normals()'s working memory (on huge pages: huge_page_pool.hpp).
 struct NormalsScratch {
-    std::vector<glm::dvec3> sums;
-    std::vector<double> largest_area;
-    std::vector<glm::dvec3> largest_face_normal;
-    std::vector<glm::dvec4> faces;  ///< per triangle: its cross product and length (-1: not finite)
+    FrameVector<glm::dvec3> sums;
+    FrameVector<double> largest_area;
+    FrameVector<glm::dvec3> largest_face_normal;
+    FrameVector<glm::dvec4> faces;  ///< per triangle: its cross product and length (-1: not finite)
 };
 
 /// calculate_normals(positions, triangles), written into `normals`, in

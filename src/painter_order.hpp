@@ -41,7 +41,7 @@ inline std::uint64_t farthest_first_key(double depth) {
 
 /// The contract's sort key of a triangle: the mean z_c (camera space) of its
 /// three vertices, as a key whose ascending order is farthest first.
-inline std::uint64_t painter_key(const Triangle& triangle, const std::vector<ScreenVertex>& screen) {
+inline std::uint64_t painter_key(const Triangle& triangle, const FrameVector<ScreenVertex>& screen) {
     return farthest_first_key((screen[triangle[0]].depth + screen[triangle[1]].depth + screen[triangle[2]].depth) / 3.0);
 }
 
@@ -59,8 +59,8 @@ using Counts = std::array<std::uint32_t, kBuckets>;
 
 /// painter_order()'s output and scratch, kept from frame to frame.
 struct PainterOrderMemory {
-    std::vector<PaintRecord> sorted;   ///< the drawn triangles in painter's order
-    std::vector<PaintRecord> scratch;  ///< room to sort buckets: each task's largest bucket
+    FrameVector<PaintRecord> sorted;   ///< the drawn triangles in painter's order (huge pages: huge_page_pool.hpp)
+    FrameVector<PaintRecord> scratch;  ///< room to sort buckets: each task's largest bucket
     std::array<std::size_t, painter_sort::kBuckets> task_scratch_start{};  ///< per task of buckets: its scratch
     std::vector<painter_sort::Counts> group_counts;  ///< per group of set-up chunks: its records per bucket
     std::vector<std::uint64_t> group_min, group_max;  ///< per group: its smallest and largest key

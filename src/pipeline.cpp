@@ -61,7 +61,7 @@ void prepare_textures(const AssembledScene& assembled, const RenderOptions& opti
 /// read and textured Gouraud leaves to (s, t) (its A and S live elsewhere).
 template <typename Real>
 void put_texcoords_in_lit(const AssembledScene& assembled, FrameMemory<Real>& memory) {
-    std::vector<Varyings<Real>>& varyings = memory.vertices.varyings;
+    FrameVector<Varyings<Real>>& varyings = memory.vertices.varyings;
     for (std::size_t i = 0; i < varyings.size(); ++i) {
         varyings[i].lit = Vec3<Real>(Real(assembled.texcoords[i].x), Real(assembled.texcoords[i].y), Real(0));
     }

@@ -12,6 +12,7 @@
 #define PHONGRAST_SRC_POPULATE_PAGES_HPP
 
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace phongrast::detail {
@@ -25,17 +26,33 @@ namespace phongrast::detail {
 /// (for tests; callers need not care).
 bool populate_for_writing(const void* begin, std::size_t bytes);
 
+template <typename Allocator, typename = void>
+struct KnowsHugePages : std::false_type {};
+template <typename Allocator>
+struct KnowsHugePages<Allocator, std::void_t<decltype(Allocator::on_huge_pages(nullptr))>> : std::true_type {};
+
+/// populate_for_writing() for memory of a vector with `Allocator`, except
+/// memory on huge pages (huge_page_pool.hpp), which is faulted in a 2 MiB
+/// page at a time: populating huge pages ahead took longer here.
+template <typename Allocator>
+bool populate_for_writing_in(const void* begin, std::size_t bytes) {
+    if constexpr (KnowsHugePages<Allocator>::value) {
+        if (bytes >= (std::size_t(16) << 10) && Allocator::on_huge_pages(begin)) return false;
+    }
+    return populate_for_writing(begin, bytes);
+}
+
 /// values.reserve(size), the new capacity mapped at once (populate_for_writing).
-template <typename T>
-void reserve_populated(std::vector<T>& values, std::size_t size) {
+template <typename T, typename A>
+void reserve_populated(std::vector<T, A>& values, std::size_t size) {
     if (size <= values.capacity()) return;
     values.reserve(size);
-    populate_for_writing(values.data() + values.size(), (values.capacity() - values.size()) * sizeof(T));
+    populate_for_writing_in<A>(values.data() + values.size(), (values.capacity() - values.size()) * sizeof(T));
 }
 
 /// values.assign(size, value) into memory mapped at once when it must grow.
-template <typename T>
-void assign_populated(std::vector<T>& values, std::size_t size, const T& value) {
+template <typename T, typename A>
+void assign_populated(std::vector<T, A>& values, std::size_t size, const T& value) {
     if (size > values.capacity()) {
         values.clear();
         reserve_populated(values, size);

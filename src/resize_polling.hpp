@@ -19,8 +19,10 @@ namespace phongrast::detail {
 /// between (so Ctrl-C in Python waited that long). The contents end up the
 /// same as one resize's; shrinking is one resize. Each step's new pages are
 /// mapped in one call first (populate_pages.hpp).
-template <typename T>
-void resize_polling(std::vector<T>& values, std::size_t size, const std::function<void()>& poll) {
+/// `populate` false: the caller has mapped or advised the new part already (reserve_on_huge_pages).
+template <typename T, typename A>
+void resize_polling(std::vector<T, A>& values, std::size_t size, const std::function<void()>& poll,
+                    bool populate = true) {
     if (size <= values.size()) {
         values.resize(size);
         return;
@@ -30,7 +32,7 @@ void resize_polling(std::vector<T>& values, std::size_t size, const std::functio
     const std::size_t step = std::max<std::size_t>(1, kStepBytes / sizeof(T));
     while (values.size() < size) {
         const std::size_t next = std::min(size, values.size() + step);
-        populate_for_writing(values.data() + values.size(), (next - values.size()) * sizeof(T));
+        if (populate) populate_for_writing_in<A>(values.data() + values.size(), (next - values.size()) * sizeof(T));
         values.resize(next);
         if (poll) poll();
     }
@@ -39,8 +41,8 @@ void resize_polling(std::vector<T>& values, std::size_t size, const std::functio
 /// values.assign(size, value), the same way: when the vector must grow
 /// beyond its capacity (new pages), it is filled in steps with `poll()`
 /// between them; otherwise one assign (memory already touched is fast).
-template <typename T>
-void assign_polling(std::vector<T>& values, std::size_t size, const T& value, const std::function<void()>& poll) {
+template <typename T, typename A>
+void assign_polling(std::vector<T, A>& values, std::size_t size, const T& value, const std::function<void()>& poll) {
     if (size <= values.capacity()) {
         values.assign(size, value);
         return;
@@ -51,7 +53,7 @@ void assign_polling(std::vector<T>& values, std::size_t size, const T& value, co
     const std::size_t step = std::max<std::size_t>(1, kStepBytes / sizeof(T));
     while (values.size() < size) {
         const std::size_t next = std::min(size, values.size() + step);
-        populate_for_writing(values.data() + values.size(), (next - values.size()) * sizeof(T));
+        populate_for_writing_in<A>(values.data() + values.size(), (next - values.size()) * sizeof(T));
         values.resize(next, value);
         if (poll) poll();
     }

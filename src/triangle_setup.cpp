@@ -59,7 +59,7 @@ public:
             ++counts_.dropped;
             return;
         }
-        const std::vector<ScreenVertex>& screen = vertices_.screen;
+        const FrameVector<ScreenVertex>& screen = vertices_.screen;
         if (!within_drawable_depth(screen[tri[0]]) || !within_drawable_depth(screen[tri[1]]) ||
             !within_drawable_depth(screen[tri[2]])) {
             ++counts_.out_of_range;
@@ -112,7 +112,7 @@ private:
             same_lit_) {
             return Vec3<Real>(Real(0));
         }
-        const std::vector<Varyings<Real>>& varyings = vertices_.varyings;
+        const FrameVector<Varyings<Real>>& varyings = vertices_.varyings;
         return (varyings[tri[0]].position + varyings[tri[1]].position + varyings[tri[2]].position) / Real(3);
     }
 
@@ -483,7 +483,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
     if (draws.chunk_mapped.size() < chunks) draws.chunk_mapped.resize(chunks);
     draws.chunk_counts.assign(chunks, SetupCounts{});
     draws.chunks = chunks;
-    const std::vector<ScreenVertex>& screen = input.vertices.screen;
+    const FrameVector<ScreenVertex>& screen = input.vertices.screen;
     const bool mapped = draws.arena.mapped();  // huge pages: no 4 KiB map-ahead
     progress.begin_stage(0.1, 0.35, chunks);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {

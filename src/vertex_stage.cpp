@@ -22,7 +22,7 @@ constexpr std::size_t kLightingBlock = 1024;
 /// The unit camera-space normals of vertices [begin, end), into their varyings.
 template <typename Real>
 void camera_normals(const CameraFrame& frame, const std::vector<glm::vec3>& normals, std::size_t begin,
-                    std::size_t end, std::vector<Varyings<Real>>& varyings) {
+                    std::size_t end, FrameVector<Varyings<Real>>& varyings) {
     constexpr std::size_t kLanes = 256;
     Real x[kLanes], y[kLanes], z[kLanes];
     for (std::size_t first = begin; first < end; first += kLanes) {
@@ -45,7 +45,7 @@ View::View(const Camera& camera, int rows, int columns, glm::dvec2 offset, int s
       near_depth(camera.model == CameraModel::orthographic ? std::numeric_limits<double>::denorm_min()
                                                              : camera.focal * kNearPlaneOverFocal) {}
 
-void place_near_plane(View& view, const std::vector<ScreenVertex>& screen) {
+void place_near_plane(View& view, const FrameVector<ScreenVertex>& screen) {
     if (view.frame.model != CameraModel::opencv) return;
     double farthest = -std::numeric_limits<double>::infinity();
     for (const ScreenVertex& s : screen) farthest = std::max(farthest, s.depth);
@@ -144,7 +144,7 @@ constexpr std::size_t kMaxLaneLights = 8;
 /// shaded from them: what PointShader computes vertex by vertex, bit for bit.
 template <typename Real>
 void light_vertex_lanes(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
-                        std::vector<Varyings<Real>>& varyings, std::size_t begin, std::size_t end,
+                        FrameVector<Varyings<Real>>& varyings, std::size_t begin, std::size_t end,
                         LightVectorsAt<Real>& vectors) {
     const std::vector<CameraLight<Real>>& lights = shader.rig->active_lights;
     const std::size_t count = lights.size() + 1;  // the lights, then the eye
@@ -185,7 +185,7 @@ void light_vertex_lanes(const PointShader<Real>& shader, const VertexMaterials<R
 
 template <typename Real>
 void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
-                    std::vector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory) {
+                    FrameVector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory) {
     const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
     if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
     const bool lanes = shader.specialized && shader.effects.normals && shader.rig->active_lights.size() <= kMaxLaneLights;
@@ -208,7 +208,7 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
 
 template <typename Real>
 void light_vertices_in_parts(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
-                             const ShadingParts<Real>& parts, std::vector<Varyings<Real>>& varyings,
+                             const ShadingParts<Real>& parts, FrameVector<Varyings<Real>>& varyings,
                              std::vector<Vec3<Real>>& colour_parts, VertexStageMemory<Real>& memory) {
     colour_parts.resize(varyings.size());
     const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
@@ -238,9 +238,9 @@ void light_vertices_in_parts(const PointShader<Real>& shader, const VertexMateri
     template void build_light_rig<Real>(const Scene&, const CameraFrame&, LightRig<Real>&);                     \
     template void build_light_rig<Real>(const Scene&, const PhongMaterial&, const CameraFrame&, LightRig<Real>&); \
     template void light_vertices<Real>(const PointShader<Real>&, const VertexMaterials<Real>&,                  \
-                                       std::vector<Varyings<Real>>&, VertexStageMemory<Real>&);              \
+                                       FrameVector<Varyings<Real>>&, VertexStageMemory<Real>&);              \
     template void light_vertices_in_parts<Real>(const PointShader<Real>&, const VertexMaterials<Real>&,         \
-                                                const ShadingParts<Real>&, std::vector<Varyings<Real>>&,        \
+                                                const ShadingParts<Real>&, FrameVector<Varyings<Real>>&,        \
                                                 std::vector<Vec3<Real>>&, VertexStageMemory<Real>&);
 PHONGRAST_INSTANTIATE_VERTEX_STAGE(float)
 PHONGRAST_INSTANTIATE_VERTEX_STAGE(double)

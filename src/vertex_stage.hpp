@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "huge_page_pool.hpp"
 #include "normals.hpp"
 #include "phongrast/render.hpp"
 #include "progress_monitor.hpp"
@@ -29,8 +30,8 @@ struct ScreenVertex {
 /// The vertex stage's output, indexed like Mesh::positions.
 template <typename Real>
 struct TransformedVertices {
-    std::vector<ScreenVertex> screen;
-    std::vector<Varyings<Real>> varyings; ///< camera-space position and normal, colour, lit colour
+    FrameVector<ScreenVertex> screen;
+    FrameVector<Varyings<Real>> varyings; ///< camera-space position and normal, colour, lit colour
 
     /// The seed's border rule: in front of the eye and inside the image, judged
     /// at the unshifted vertex whatever the sample offset.
@@ -58,7 +59,7 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
 
 /// An OpenCV camera's near plane: 1e-4 x the largest z_c of the vertices
 /// (`screen`, from transform_vertices()); other cameras' is set by View.
-void place_near_plane(View& view, const std::vector<ScreenVertex>& screen);
+void place_near_plane(View& view, const FrameVector<ScreenVertex>& screen);
 
 /// The lights in camera space, those with zero intensity left out of the active ones.
 template <typename Real>
@@ -85,7 +86,7 @@ struct VertexMaterials {
 /// the triangle, so it is lit once, into Varyings::lit, and shared.
 template <typename Real>
 void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
-                    std::vector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory);
+                    FrameVector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory);
 
 /// Textured Gouraud's parts (contract "Texture maps"): per material, whether
 /// its faces draw a texture, and the shaders of the colour-carrying part A
@@ -104,7 +105,7 @@ struct ShadingParts {
 /// array, so that untextured renders carry nothing more per vertex.
 template <typename Real>
 void light_vertices_in_parts(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
-                             const ShadingParts<Real>& parts, std::vector<Varyings<Real>>& varyings,
+                             const ShadingParts<Real>& parts, FrameVector<Varyings<Real>>& varyings,
                              std::vector<Vec3<Real>>& colour_parts, VertexStageMemory<Real>& memory);
 
 }  // namespace phongrast::detail

@@ -351,7 +351,7 @@ TEST_CASE("near planes: look-at 1e-4 focal, OpenCV 1e-4 of the farthest vertex, 
     const Camera opencv = Camera::from_opencv({{{10.0, 0.0, 4.0}, {0.0, 10.0, 4.0}, {0.0, 0.0, 1.0}}},
                                               pose(rotation({0, 1, 0}, 0.0), {0, 0, 5}));
     View view(opencv, 8, 8, glm::dvec2(0.0));
-    std::vector<ScreenVertex> screen = {{0, 0, -3.0}, {0, 0, 2.0}, {0, 0, 50.0}};
+    phongrast::detail::FrameVector<ScreenVertex> screen = {{0, 0, -3.0}, {0, 0, 2.0}, {0, 0, 50.0}};
     phongrast::detail::place_near_plane(view, screen);
     CHECK(view.near_depth == Approx(50.0 * 1e-4));
     // Nothing in front of the eye: a positive plane all vertices are behind.

@@ -145,7 +145,7 @@ TEST_CASE("Phong set-up keeps the centroid for the seed's light vectors, and non
     seed.options.light_vectors = phongrast::LightVectors::triangle_centroid;
     seed.run();
     REQUIRE(seed.draws.size() == 1);
-    const std::vector<pd::Varyings<float>>& corners = seed.vertices.varyings;
+    const pd::FrameVector<pd::Varyings<float>>& corners = seed.vertices.varyings;
     const glm::vec3 centroid = (corners[0].position + corners[1].position + corners[2].position) / 3.0f;
     CHECK(centroid.z != 0.0f);  // in camera space, in front of the eye
     CHECK(seed.draws[0].centroid() == centroid);

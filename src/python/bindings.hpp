@@ -16,6 +16,8 @@ void bind_seed_fill(py::module_& module);
 void bind_camera(py::module_& module);
 /// Mesh, Scene, render, Renderer, read_image, write_image.
 void bind_scene_api(py::module_& module);
+/// Starts oneTBB on a thread of its own (thread_pool_start.cpp), so that the first render does not.
+void start_thread_pool();
 
 }  // namespace phongrast::python
 

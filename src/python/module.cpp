@@ -45,4 +45,5 @@ malformed files raise phongrast.FileError (a ValueError) naming the file.)";
     phongrast::python::bind_camera(module);
     phongrast::python::bind_scene_api(module);
     phongrast::python::add_text_signatures(module);  // last: inspect.signature() for everything above
+    phongrast::python::start_thread_pool();
 }
