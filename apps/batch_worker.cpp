@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -15,7 +16,6 @@
 #include <sched.h>
 #include <unistd.h>
 
-#include "batch_queue.hpp"
 #include "batch_views.hpp"
 #include "phongrast/io/camera_record.hpp"
 #include "phongrast/io/dataset_files.hpp"
@@ -184,17 +184,52 @@ bool lane_sized(const JobScenes& scenes) {
     return scenes.cameras.size() <= kViewsMax && samples <= kSamplesMax && triangles <= kTrianglesMax;
 }
 
-void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, int threads,
-                BoundedQueue<LoadedJob>& loaded) {
-    MeshFileCache meshes;  // every mesh parsed once per shard, while memory allows
-    for (std::size_t position = first; position < jobs.size(); ++position) {
+/// Loaded jobs from the loader threads, handed to the lanes in the list's
+/// order. A loader waits while its job is `capacity` or more ahead of the
+/// next one to hand out (which another loader, never waiting, is loading).
+class OrderedLoads {
+public:
+    OrderedLoads(std::size_t first, std::size_t capacity) : next_(first), capacity_(capacity) {}
+
+    void push(std::size_t position, LoadedJob job) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [&] { return position < next_ + capacity_; });
+        ready_.emplace(position, std::move(job));
+        changed_.notify_all();
+    }
+
+    LoadedJob pop() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [&] { return ready_.count(next_) != 0; });
+        const auto found = ready_.find(next_);
+        LoadedJob job = std::move(found->second);
+        ready_.erase(found);
+        ++next_;
+        changed_.notify_all();
+        return job;
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::map<std::size_t, LoadedJob> ready_;
+    std::size_t next_;
+    std::size_t capacity_;
+};
+
+/// Loads jobs[first + offset], jobs[first + offset + stride], ...: one of
+/// `stride` loaders. A batch's first jobs each name a mesh not parsed yet,
+/// and one loader's parses then set the pace of every lane.
+void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, std::size_t offset, std::size_t stride,
+                int threads, MeshFileCache& meshes, OrderedLoads& loaded) {
+    for (std::size_t position = first + offset; position < jobs.size(); position += stride) {
         LoadedJob job;
         try {
             job.scenes = std::make_unique<JobScenes>(load_job(*jobs[position], threads, &meshes));
         } catch (const std::exception& error) {
             job.error = error.what();
         }
-        loaded.push(std::move(job));
+        loaded.push(position, std::move(job));
     }
 }
 
@@ -344,10 +379,16 @@ void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, con
                 int threads, const io::ImageWriteOptions& image_options, int report_fd, bool one_lane) {
     Reporter reporter(report_fd);
     const int lanes = one_lane ? 1 : lane_count(threads);
-    BoundedQueue<LoadedJob> loaded(static_cast<std::size_t>(std::max(2, lanes)));
+    // One loader per lane, up to 2 (one with a single lane, as before the lanes).
+    const std::size_t loaders = lanes > 1 ? 2 : 1;
+    OrderedLoads loaded(first, static_cast<std::size_t>(std::max(2, lanes)));
     OrderedWrites pending(first, 4);
     RenderGate gate(first);
-    std::thread loader([&] { load_ahead(jobs, first, threads, loaded); });
+    MeshFileCache meshes;  // every mesh parsed once per shard, while memory allows
+    std::vector<std::thread> loader_threads;
+    for (std::size_t offset = 0; offset < loaders; ++offset) {
+        loader_threads.emplace_back([&, offset] { load_ahead(jobs, first, offset, loaders, threads, meshes, loaded); });
+    }
     std::thread writer([&] { write_images(jobs.size() - first, pending, reporter, image_options); });
     std::mutex taking;  // jobs are taken, reported started and popped in order
     std::size_t next = first;
@@ -371,7 +412,7 @@ void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, con
     for (int i = 1; i < lanes; ++i) more_lanes.emplace_back(lane);
     lane();
     for (std::thread& other : more_lanes) other.join();
-    loader.join();
+    for (std::thread& loader : loader_threads) loader.join();
     writer.join();
 }
 

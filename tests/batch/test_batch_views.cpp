@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include <glm/geometric.hpp>
 
@@ -309,4 +310,25 @@ TEST_CASE("a plain mesh's jobs get the normals the renderer computes, computed o
     CHECK(meshes.normals_computed() == 1);
     // Without the cache the renderer computes them, as `render` does.
     CHECK(load_job(manifest.jobs[0], 0).prepared.scene.mesh.normals.empty());
+}
+
+TEST_CASE("loaders reading at once parse each mesh once, and get the same parsed file") {
+    TemporaryFolder folder;
+    std::string big = "v 0 0 0\n";  // a few thousand faces, so that the parses overlap
+    for (int i = 1; i <= 3000; ++i) big += "v " + std::to_string(i) + " 1 0\nf 1 " + std::to_string(i) + " " + std::to_string(i + 1) + "\n";
+    big += "v 0 2 0\n";
+    const std::string a = folder.write("a.obj", big);
+    const std::string b = folder.write("b.obj", big + "v 5 5 5\n");
+    MeshFileCache meshes;
+    std::vector<std::shared_ptr<const io::MeshFile>> got(8);
+    std::vector<std::thread> loaders;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+        loaders.emplace_back([&, i] { got[i] = meshes.read(i % 2 == 0 ? a : b); });
+    }
+    for (std::thread& loader : loaders) loader.join();
+    CHECK(meshes.parses() == 2);
+    CHECK(meshes.files() == 2);
+    for (std::size_t i = 2; i < got.size(); ++i) CHECK(got[i].get() == got[i % 2].get());
+    CHECK(got[0]->mesh.positions.size() == 3002);
+    CHECK(got[1]->mesh.positions.size() == 3003);
 }
