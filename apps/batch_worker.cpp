@@ -70,6 +70,42 @@ struct WriteItem {
     std::vector<std::pair<std::string, std::string>> job_files;
 };
 
+/// Image memory the writer has finished with, for the lanes' next copies:
+/// a 256x256 frame is 786 KB of floats, and a fresh allocation of that size
+/// comes back from the kernel as fresh pages (a page fault each) every image.
+class SpareImages {
+public:
+    /// `result` copied into kept memory when there is some.
+    Image copy_of(const Image& result) {
+        Image image;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (!spare_.empty()) {
+                image = std::move(spare_.back());
+                spare_.pop_back();
+            }
+        }
+        image.rows = result.rows;
+        image.columns = result.columns;
+        image.pixels.assign(result.pixels.begin(), result.pixels.end());
+        return image;
+    }
+
+    /// Keeps `image`'s memory: a few images' worth (those in flight), of
+    /// small frames only (a large frame's copy costs far more than its pages).
+    void give_back(Image&& image) {
+        if (image.pixels.capacity() > kPixelsMax) return;
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (spare_.size() < kKept) spare_.push_back(std::move(image));
+    }
+
+private:
+    static constexpr std::size_t kKept = 8;
+    static constexpr std::size_t kPixelsMax = std::size_t{512} * 512;
+    std::mutex mutex_;
+    std::vector<Image> spare_;
+};
+
 /// Images on their way from the render lanes to the writer, which takes them
 /// job by job in the list's order (so the supervisor hears of jobs ending in
 /// order, as it expects): the job being written, then the next. A lane
@@ -234,12 +270,15 @@ void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, std
 }
 
 void write_images(std::size_t count, OrderedWrites& pending, Reporter& reporter,
-                  const io::ImageWriteOptions& image_options) {
+                  const io::ImageWriteOptions& image_options, SpareImages& spares) {
     std::string error;  // of the job being written
     for (std::size_t finished = 0; finished < count;) {
         WriteItem item = pending.pop();
         if (item.image) {
-            if (!error.empty()) continue;  // the job already failed: its other views are moot
+            if (!error.empty()) {  // the job already failed: its other views are moot
+                spares.give_back(std::move(*item.image));
+                continue;
+            }
             try {
                 const fs::path folder = fs::path(item.path).parent_path();
                 if (!folder.empty()) fs::create_directories(folder);
@@ -252,6 +291,7 @@ void write_images(std::size_t count, OrderedWrites& pending, Reporter& reporter,
             } catch (const std::exception& failure) {
                 error = failure.what();
             }
+            spares.give_back(std::move(*item.image));
             continue;
         }
         if (error.empty()) error = item.error;
@@ -315,7 +355,8 @@ struct LaneRenderers {
 /// `lanes`: how many render lanes the worker runs (more than one: a small
 /// job renders on one thread, RenderGate).
 void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& job, LoadedJob& loaded,
-                const std::string& output_folder, OrderedWrites& pending, RenderGate& gate, int lanes) {
+                const std::string& output_folder, OrderedWrites& pending, RenderGate& gate, int lanes,
+                SpareImages& spares) {
     WriteItem end;
     end.position = position;
     end.error = loaded.error;
@@ -344,7 +385,7 @@ void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& 
                     renderer.set_options(scenes.prepared.options);  // inside: the alone renderer is shared
                     const RenderResult& result = renderer.render(scenes.prepared.scene);
                     end.render_seconds += result.stats.seconds;
-                    image.image = result.image;
+                    image.image = spares.copy_of(result.image);
                     if (job.dataset_files.any()) image.planes = result.aovs;
                 }
                 image.position = position;
@@ -384,12 +425,13 @@ void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, con
     OrderedLoads loaded(first, static_cast<std::size_t>(std::max(2, lanes)));
     OrderedWrites pending(first, 4);
     RenderGate gate(first);
+    SpareImages spares;
     MeshFileCache meshes;  // every mesh parsed once per shard, while memory allows
     std::vector<std::thread> loader_threads;
     for (std::size_t offset = 0; offset < loaders; ++offset) {
         loader_threads.emplace_back([&, offset] { load_ahead(jobs, first, offset, loaders, threads, meshes, loaded); });
     }
-    std::thread writer([&] { write_images(jobs.size() - first, pending, reporter, image_options); });
+    std::thread writer([&] { write_images(jobs.size() - first, pending, reporter, image_options, spares); });
     std::mutex taking;  // jobs are taken, reported started and popped in order
     std::size_t next = first;
     Renderer alone;
@@ -405,7 +447,7 @@ void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, con
                 reporter.send({{"start", position}});
                 job = loaded.pop();
             }
-            render_job(renderers, position, *jobs[position], job, output_folder, pending, gate, lanes);
+            render_job(renderers, position, *jobs[position], job, output_folder, pending, gate, lanes, spares);
         }
     };
     std::vector<std::thread> more_lanes;
