@@ -12,7 +12,6 @@
 #include <set>
 #include <thread>
 
-#include <malloc.h>
 #include <nlohmann/json.hpp>
 #include <sched.h>
 #include <unistd.h>
@@ -406,20 +405,6 @@ void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& 
     pending.push(std::move(end));
 }
 
-/// Lets glibc's malloc keep the memory freed between jobs rather than hand it
-/// back to the kernel: by default each thread's arena gives back the free
-/// top of its heap past 128 KiB (madvise), and a block past 128 KiB (until
-/// glibc's threshold adapts) is mapped and unmapped on its own, so every
-/// job's meshes, scenes and images came back as fresh pages, a page fault
-/// each (about 1.5 madvise and one mmap/munmap pair a job at 256x256). A
-/// worker renders job after job of similar sizes: up to 64 MiB free per
-/// arena is kept, and blocks up to 32 MiB (glibc's largest adaptive
-/// threshold) come from the heaps.
-void keep_freed_memory() {
-    ::mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    ::mallopt(M_TRIM_THRESHOLD, 64 << 20);
-}
-
 /// Render lanes for `threads` (0: every core this process may run on, up to 4).
 int lane_count(int threads) {
     if (threads != 0) return 1;
@@ -434,7 +419,6 @@ int lane_count(int threads) {
 void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, const std::string& output_folder,
                 int threads, const io::ImageWriteOptions& image_options, int report_fd, bool one_lane) {
     Reporter reporter(report_fd);
-    keep_freed_memory();
     const int lanes = one_lane ? 1 : lane_count(threads);
     // One loader per lane, up to 2 (one with a single lane, as before the lanes).
     const std::size_t loaders = lanes > 1 ? 2 : 1;
