@@ -42,7 +42,7 @@ JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes = nul
 /// threads) and whose mesh file is still the one that job's scenes were made
 /// from (the same parsed file in `meshes`: its file, MTL and textures
 /// unchanged) gets a copy of those scenes, without preparing, framing and
-/// checking the scene again (about a third of a millisecond per job for a
+/// checking the scene again (a few tenths of a millisecond per job for a
 /// 12k-triangle mesh, most of the loader's time once every mesh is parsed).
 /// load_job() is a function of those inputs and the file alone, so the copy
 /// is what it would return. Kept scenes are bounded by memory (their meshes,
