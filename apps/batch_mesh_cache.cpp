@@ -52,9 +52,11 @@ std::size_t mesh_file_bytes(const io::MeshFile& file) {
 std::shared_ptr<const io::MeshFile> MeshFileCache::read(const std::string& path) {
     // Taken before reading: a file changed while it is read has another identity next time.
     const std::string identity = io::file_identity(path);
-    std::lock_guard<std::mutex> lock(mutex_);
+    const std::string canonical = identity_path(identity);
+    std::unique_lock<std::mutex> lock(mutex_);
     if (!identity.empty()) {
-        const std::string canonical = identity_path(identity);
+        // Another thread parsing this file: wait for it rather than parse it twice.
+        read_finished_.wait(lock, [&] { return reading_.count(canonical) == 0; });
         for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
             if (entry->canonical != canonical) continue;
             if (entry->identity == identity && sides_unchanged(entry->side_identities)) {
@@ -65,19 +67,34 @@ std::shared_ptr<const io::MeshFile> MeshFileCache::read(const std::string& path)
             entries_.erase(entry);
             break;
         }
+        reading_.insert(canonical);
     }
+    // Parsed outside the lock, so that several loaders parse different files at once.
+    lock.unlock();
     Entry fresh;
     fresh.identity = identity;
-    fresh.canonical = identity_path(identity);
-    // read_mesh throws for a bad file, and nothing is kept. The side files are
-    // known only after the read: one edited during it is seen at its next edit.
-    fresh.file = std::make_shared<const io::MeshFile>(io::read_mesh(path));
+    fresh.canonical = canonical;
+    try {
+        // read_mesh throws for a bad file, and nothing is kept. The side files are
+        // known only after the read: one edited during it is seen at its next edit.
+        fresh.file = std::make_shared<const io::MeshFile>(io::read_mesh(path));
+        if (!identity.empty()) {
+            for (const std::string& side : fresh.file->side_files) {
+                fresh.side_identities.emplace_back(side, io::file_identity(side));
+            }
+            fresh.bytes = mesh_file_bytes(*fresh.file);
+        }
+    } catch (...) {
+        lock.lock();
+        reading_.erase(canonical);
+        read_finished_.notify_all();
+        throw;
+    }
+    lock.lock();
     ++parses_;
     if (identity.empty()) return fresh.file;  // no identity to find it by (not a regular file?)
-    for (const std::string& side : fresh.file->side_files) {
-        fresh.side_identities.emplace_back(side, io::file_identity(side));
-    }
-    fresh.bytes = mesh_file_bytes(*fresh.file);
+    reading_.erase(canonical);
+    read_finished_.notify_all();
     bytes_ += fresh.bytes;
     entries_.push_front(std::move(fresh));
     while (bytes_ > budget_ && entries_.size() > 1) {

@@ -4,10 +4,12 @@
 #ifndef PHONGRAST_APPS_BATCH_MESH_CACHE_HPP
 #define PHONGRAST_APPS_BATCH_MESH_CACHE_HPP
 
+#include <condition_variable>
 #include <cstddef>
 #include <list>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,7 +24,9 @@ namespace phongrast::cli {
 /// a file is known by its canonical path, size and modification time
 /// (io::file_identity), and so is every side file its reader read or looked
 /// for (MeshFile::side_files: MTL, textures, glTF buffers), so an edited mesh,
-/// MTL or texture is read again. Failed reads are not kept. Thread-safe.
+/// MTL or texture is read again. Failed reads are not kept. Thread-safe:
+/// files are parsed outside the lock, several at once, each by one thread
+/// (another asking for the same file waits for that parse).
 class MeshFileCache {
 public:
     /// 256 MiB: a 12k-triangle coloured OBJ takes about 0.36 MB, a 1M-triangle one about 30-60 MB.
@@ -57,6 +61,8 @@ private:
     };
 
     mutable std::mutex mutex_;
+    std::condition_variable read_finished_;
+    std::set<std::string> reading_;  ///< canonical paths being parsed now (outside the lock)
     std::list<Entry> entries_;  ///< most recently used first
     std::size_t budget_;
     std::size_t bytes_ = 0;

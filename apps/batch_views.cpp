@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -132,7 +133,8 @@ std::vector<ViewDirection> job_directions(const BatchJob& job) {
     return turntable_directions(job.views / static_cast<int>(job.elevations.size()), job.elevations);
 }
 
-JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes) {
+JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes,
+                   std::shared_ptr<const io::MeshFile>* mesh_read) {
     SceneFlags flags;
     flags.input = job.kind == JobKind::inline_scene ? "" : job.path;
     flags.shader = job.settings.shader;
@@ -160,6 +162,7 @@ JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes) {
         scenes.prepared = prepare_scene(flags, silent);
     }
     if (read.size() == 1) give_computed_normals(scenes.prepared.scene, read.front(), *meshes);
+    if (mesh_read != nullptr) *mesh_read = read.size() == 1 ? read.front() : nullptr;
     if (job.kind == JobKind::mesh && !job.cameras.empty()) {
         use_cameras(scenes.prepared.scene, job.cameras, scenes);
     } else if (job.kind == JobKind::mesh) {
@@ -169,6 +172,85 @@ JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes) {
         scenes.lights.assign(1, scenes.prepared.scene.lights);
     }
     return scenes;
+}
+
+namespace {
+
+/// Everything of `job` (and `threads`) load_job() reads besides the files:
+/// fields joined by a byte no path or name holds.
+std::string memo_key(const BatchJob& job, int threads) {
+    const char separator = '\0';
+    std::string key = job.path;
+    const auto add = [&](const std::string& field) {
+        key += separator;
+        key += field;
+    };
+    add(job.settings.shader);
+    add(job.settings.lighting);
+    add(job.settings.size);
+    add(job.settings.samples ? std::to_string(*job.settings.samples) : "-");
+    for (const auto& [name, value] : job.settings.options) add(name + "=" + value);
+    add("layout " + std::to_string(static_cast<int>(job.layout)));
+    add("views " + std::to_string(job.views));
+    for (const double degrees : job.elevations) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", degrees);
+        add(text);
+    }
+    add("threads " + std::to_string(threads));
+    return key;
+}
+
+}  // namespace
+
+JobScenes JobScenesMemo::load(const BatchJob& job, int threads) {
+    if (job.kind != JobKind::mesh || !job.cameras.empty()) return load_job(job, threads, &meshes_);
+    std::shared_ptr<const io::MeshFile> file;
+    try {
+        file = meshes_.read(job.path);  // the current file (parsed again if it changed)
+    } catch (const std::exception&) {
+        return load_job(job, threads, &meshes_);  // fails with load_job's own message
+    }
+    const std::string key = memo_key(job, threads);
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
+            if (entry->key != key) continue;
+            if (entry->file == file) {
+                entries_.splice(entries_.begin(), entries_, entry);
+                ++reuses_;
+                return *entry->scenes;
+            }
+            bytes_ -= entry->bytes;  // made from an older file
+            entries_.erase(entry);
+            break;
+        }
+    }
+    std::shared_ptr<const io::MeshFile> made_from;
+    auto scenes = std::make_shared<const JobScenes>(load_job(job, threads, &meshes_, &made_from));
+    if (made_from != file) return *scenes;  // the file changed meanwhile: not kept
+    Entry fresh{key, file, scenes, mesh_file_bytes(*file)};
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const Entry& entry : entries_) {
+        if (entry.key == key) return *scenes;  // another loader kept it meanwhile
+    }
+    bytes_ += fresh.bytes;
+    entries_.push_front(std::move(fresh));
+    while (bytes_ > budget_ && entries_.size() > 1) {
+        bytes_ -= entries_.back().bytes;
+        entries_.pop_back();
+    }
+    return *scenes;
+}
+
+std::size_t JobScenesMemo::reuses() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return reuses_;
+}
+
+std::size_t JobScenesMemo::kept() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return entries_.size();
 }
 
 }  // namespace phongrast::cli

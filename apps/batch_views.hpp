@@ -5,7 +5,10 @@
 #ifndef PHONGRAST_APPS_BATCH_VIEWS_HPP
 #define PHONGRAST_APPS_BATCH_VIEWS_HPP
 
+#include <cstddef>
+#include <list>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,8 +30,51 @@ struct JobScenes {
 
 /// Loads a job's files, meshes through `meshes` when given. Throws
 /// io::FileError or std::invalid_argument for a bad scene or mesh (the job
-/// fails, the batch goes on).
-JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes = nullptr);
+/// fails, the batch goes on). `mesh_read`, when given, is set to the one
+/// mesh file the scene was made from (null when it was made from none or
+/// several, or without `meshes`).
+JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes = nullptr,
+                   std::shared_ptr<const io::MeshFile>* mesh_read = nullptr);
+
+/// load_job() for a shard's loaders: a mesh job (views of a layout, not
+/// "cameras") that asks for what an earlier one asked (the same mesh path,
+/// shader, lighting, size, samples, options, layout, views and elevations,
+/// threads) and whose mesh file is still the one that job's scenes were made
+/// from (the same parsed file in `meshes`: its file, MTL and textures
+/// unchanged) gets a copy of those scenes, without preparing, framing and
+/// checking the scene again (a few tenths of a millisecond per job for a
+/// 12k-triangle mesh, most of the loader's time once every mesh is parsed).
+/// load_job() is a function of those inputs and the file alone, so the copy
+/// is what it would return. Kept scenes are bounded by memory (their meshes,
+/// estimated as mesh_file_bytes()), least recently used dropped first.
+/// Thread-safe (several loaders); the scenes are made outside the lock.
+class JobScenesMemo {
+public:
+    static constexpr std::size_t kDefaultBudgetBytes = std::size_t{64} << 20;
+
+    explicit JobScenesMemo(MeshFileCache& meshes, std::size_t budget_bytes = kDefaultBudgetBytes)
+        : meshes_(meshes), budget_(budget_bytes) {}
+
+    JobScenes load(const BatchJob& job, int threads);
+
+    std::size_t reuses() const;  ///< loads answered with a kept job's scenes
+    std::size_t kept() const;    ///< scenes kept now
+
+private:
+    struct Entry {
+        std::string key;
+        std::shared_ptr<const io::MeshFile> file;
+        std::shared_ptr<const JobScenes> scenes;
+        std::size_t bytes = 0;
+    };
+
+    MeshFileCache& meshes_;
+    std::size_t budget_;
+    mutable std::mutex mutex_;
+    std::list<Entry> entries_;  ///< most recently used first
+    std::size_t bytes_ = 0;
+    std::size_t reuses_ = 0;
+};
 
 /// Whether the renderer computes `scene`'s vertex normals from its mesh's
 /// positions and triangles alone (calculate_normals): one mesh given without

@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -15,7 +16,6 @@
 #include <sched.h>
 #include <unistd.h>
 
-#include "batch_queue.hpp"
 #include "batch_views.hpp"
 #include "phongrast/io/camera_record.hpp"
 #include "phongrast/io/dataset_files.hpp"
@@ -68,6 +68,42 @@ struct WriteItem {
     double render_seconds = 0.0;  ///< end of job: its views' render time
     /// End of job: the job's own files (path, text), written once every view's files are.
     std::vector<std::pair<std::string, std::string>> job_files;
+};
+
+/// Image memory the writer has finished with, for the lanes' next copies:
+/// a 256x256 frame is 786 KB of floats, and a fresh allocation of that size
+/// comes back from the kernel as fresh pages (a page fault each) every image.
+class SpareImages {
+public:
+    /// `result` copied into kept memory when there is some.
+    Image copy_of(const Image& result) {
+        Image image;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (!spare_.empty()) {
+                image = std::move(spare_.back());
+                spare_.pop_back();
+            }
+        }
+        image.rows = result.rows;
+        image.columns = result.columns;
+        image.pixels.assign(result.pixels.begin(), result.pixels.end());
+        return image;
+    }
+
+    /// Keeps `image`'s memory: a few images' worth (those in flight), of
+    /// small frames only (a large frame's copy costs far more than its pages).
+    void give_back(Image&& image) {
+        if (image.pixels.capacity() > kPixelsMax) return;
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (spare_.size() < kKept) spare_.push_back(std::move(image));
+    }
+
+private:
+    static constexpr std::size_t kKept = 8;
+    static constexpr std::size_t kPixelsMax = std::size_t{512} * 512;
+    std::mutex mutex_;
+    std::vector<Image> spare_;
 };
 
 /// Images on their way from the render lanes to the writer, which takes them
@@ -184,27 +220,65 @@ bool lane_sized(const JobScenes& scenes) {
     return scenes.cameras.size() <= kViewsMax && samples <= kSamplesMax && triangles <= kTrianglesMax;
 }
 
-void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, int threads,
-                BoundedQueue<LoadedJob>& loaded) {
-    MeshFileCache meshes;  // every mesh parsed once per shard, while memory allows
-    for (std::size_t position = first; position < jobs.size(); ++position) {
+/// Loaded jobs from the loader threads, handed to the lanes in the list's
+/// order. A loader waits while its job is `capacity` or more ahead of the
+/// next one to hand out (which another loader, never waiting, is loading).
+class OrderedLoads {
+public:
+    OrderedLoads(std::size_t first, std::size_t capacity) : next_(first), capacity_(capacity) {}
+
+    void push(std::size_t position, LoadedJob job) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [&] { return position < next_ + capacity_; });
+        ready_.emplace(position, std::move(job));
+        changed_.notify_all();
+    }
+
+    LoadedJob pop() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [&] { return ready_.count(next_) != 0; });
+        const auto found = ready_.find(next_);
+        LoadedJob job = std::move(found->second);
+        ready_.erase(found);
+        ++next_;
+        changed_.notify_all();
+        return job;
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::map<std::size_t, LoadedJob> ready_;
+    std::size_t next_;
+    std::size_t capacity_;
+};
+
+/// Loads jobs[first + offset], jobs[first + offset + stride], ...: one of
+/// `stride` loaders. A batch's first jobs each name a mesh not parsed yet,
+/// and one loader's parses then set the pace of every lane.
+void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, std::size_t offset, std::size_t stride,
+                int threads, JobScenesMemo& scenes, OrderedLoads& loaded) {
+    for (std::size_t position = first + offset; position < jobs.size(); position += stride) {
         LoadedJob job;
         try {
-            job.scenes = std::make_unique<JobScenes>(load_job(*jobs[position], threads, &meshes));
+            job.scenes = std::make_unique<JobScenes>(scenes.load(*jobs[position], threads));
         } catch (const std::exception& error) {
             job.error = error.what();
         }
-        loaded.push(std::move(job));
+        loaded.push(position, std::move(job));
     }
 }
 
 void write_images(std::size_t count, OrderedWrites& pending, Reporter& reporter,
-                  const io::ImageWriteOptions& image_options) {
+                  const io::ImageWriteOptions& image_options, SpareImages& spares) {
     std::string error;  // of the job being written
     for (std::size_t finished = 0; finished < count;) {
         WriteItem item = pending.pop();
         if (item.image) {
-            if (!error.empty()) continue;  // the job already failed: its other views are moot
+            if (!error.empty()) {  // the job already failed: its other views are moot
+                spares.give_back(std::move(*item.image));
+                continue;
+            }
             try {
                 const fs::path folder = fs::path(item.path).parent_path();
                 if (!folder.empty()) fs::create_directories(folder);
@@ -217,6 +291,7 @@ void write_images(std::size_t count, OrderedWrites& pending, Reporter& reporter,
             } catch (const std::exception& failure) {
                 error = failure.what();
             }
+            spares.give_back(std::move(*item.image));
             continue;
         }
         if (error.empty()) error = item.error;
@@ -280,7 +355,8 @@ struct LaneRenderers {
 /// `lanes`: how many render lanes the worker runs (more than one: a small
 /// job renders on one thread, RenderGate).
 void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& job, LoadedJob& loaded,
-                const std::string& output_folder, OrderedWrites& pending, RenderGate& gate, int lanes) {
+                const std::string& output_folder, OrderedWrites& pending, RenderGate& gate, int lanes,
+                SpareImages& spares) {
     WriteItem end;
     end.position = position;
     end.error = loaded.error;
@@ -309,7 +385,7 @@ void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& 
                     renderer.set_options(scenes.prepared.options);  // inside: the alone renderer is shared
                     const RenderResult& result = renderer.render(scenes.prepared.scene);
                     end.render_seconds += result.stats.seconds;
-                    image.image = result.image;
+                    image.image = spares.copy_of(result.image);
                     if (job.dataset_files.any()) image.planes = result.aovs;
                 }
                 image.position = position;
@@ -344,11 +420,19 @@ void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, con
                 int threads, const io::ImageWriteOptions& image_options, int report_fd, bool one_lane) {
     Reporter reporter(report_fd);
     const int lanes = one_lane ? 1 : lane_count(threads);
-    BoundedQueue<LoadedJob> loaded(static_cast<std::size_t>(std::max(2, lanes)));
+    // One loader per lane, up to 2 (one with a single lane, as before the lanes).
+    const std::size_t loaders = lanes > 1 ? 2 : 1;
+    OrderedLoads loaded(first, static_cast<std::size_t>(std::max(2, lanes)));
     OrderedWrites pending(first, 4);
     RenderGate gate(first);
-    std::thread loader([&] { load_ahead(jobs, first, threads, loaded); });
-    std::thread writer([&] { write_images(jobs.size() - first, pending, reporter, image_options); });
+    SpareImages spares;
+    MeshFileCache meshes;  // every mesh parsed once per shard, while memory allows
+    JobScenesMemo scenes(meshes);  // and each job's scenes made once
+    std::vector<std::thread> loader_threads;
+    for (std::size_t offset = 0; offset < loaders; ++offset) {
+        loader_threads.emplace_back([&, offset] { load_ahead(jobs, first, offset, loaders, threads, scenes, loaded); });
+    }
+    std::thread writer([&] { write_images(jobs.size() - first, pending, reporter, image_options, spares); });
     std::mutex taking;  // jobs are taken, reported started and popped in order
     std::size_t next = first;
     Renderer alone;
@@ -364,14 +448,14 @@ void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, con
                 reporter.send({{"start", position}});
                 job = loaded.pop();
             }
-            render_job(renderers, position, *jobs[position], job, output_folder, pending, gate, lanes);
+            render_job(renderers, position, *jobs[position], job, output_folder, pending, gate, lanes, spares);
         }
     };
     std::vector<std::thread> more_lanes;
     for (int i = 1; i < lanes; ++i) more_lanes.emplace_back(lane);
     lane();
     for (std::thread& other : more_lanes) other.join();
-    loader.join();
+    for (std::thread& loader : loader_threads) loader.join();
     writer.join();
 }
 

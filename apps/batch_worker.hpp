@@ -1,6 +1,7 @@
 // The process that renders a shard's jobs, started (forked) and watched by the
 // supervisor (batch_supervisor.hpp). Threads in a pipeline:
-//   loader:   reads the next jobs' scenes and meshes (a few jobs ahead),
+//   loaders:  read the next jobs' scenes and meshes (a few jobs ahead; two
+//             when there are several lanes, so that new meshes parse two at once),
 //   lanes:    render the jobs, one whole job at a time each. With --threads 0
 //             (the default) there is one lane per core (up to 4), and a small
 //             job (up to 8 views of at most 512x512 samples and 262,144

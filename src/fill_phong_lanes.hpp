@@ -537,9 +537,14 @@ void shade_phong_batch(const FillTriangle<Real>& draw, int n, const Lanes<Real>*
 }
 
 /// shade_phong_batch() for n samples. Below one vector's worth (tiny triangles
-/// of large meshes) the samples go one at a time through the single-lane
-/// instantiation, whose loops compile to plain scalar code: the vector loops'
-/// set-up would cost more than the work. Same operations either way.
+/// of large meshes: a 12k-triangle mesh at 256x256 shades most of its samples
+/// two to seven at a time) the samples are padded to one vector's worth with
+/// copies of the first one's weights and shaded by the one-vector
+/// instantiation, whose loops compile to a single vector instruction each
+/// (no loop, no remainder); the padding lanes' results are never read (out
+/// has kSampleBatch lanes; the caller reads n). One sample goes through the
+/// single-lane instantiation, plain scalar code. Lane for lane the same
+/// operations either way, so the bits do not depend on the batch's size.
 template <typename Real, bool PerSampleVectors, bool UniformColor, typename Terms>
 void shade_phong_samples(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w, const Terms& terms,
                          const std::vector<CameraLight<Real>>& lights, const LightVectorsAt<Real>& vectors,
@@ -547,6 +552,15 @@ void shade_phong_samples(const FillTriangle<Real>& draw, int n, const Lanes<Real
     constexpr int kVectorWidth = PHONGRAST_FILL_VECTOR_BYTES / sizeof(Real);
     if (n >= kVectorWidth) {
         shade_phong_batch<Real, PerSampleVectors, UniformColor, 0>(draw, n, w, terms, lights, vectors, constants, out);
+        return;
+    }
+    if (n > 1) {
+        Lanes<Real> padded[3];
+        for (int i = 0; i < 3; ++i) {
+            for (int l = 0; l < kVectorWidth; ++l) padded[i][l] = w[i][l < n ? l : 0];
+        }
+        shade_phong_batch<Real, PerSampleVectors, UniformColor, kVectorWidth>(draw, kVectorWidth, padded, terms, lights,
+                                                                               vectors, constants, out);
         return;
     }
     for (int l = 0; l < n; ++l) {

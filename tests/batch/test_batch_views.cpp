@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include <glm/geometric.hpp>
 
@@ -309,4 +310,73 @@ TEST_CASE("a plain mesh's jobs get the normals the renderer computes, computed o
     CHECK(meshes.normals_computed() == 1);
     // Without the cache the renderer computes them, as `render` does.
     CHECK(load_job(manifest.jobs[0], 0).prepared.scene.mesh.normals.empty());
+}
+
+TEST_CASE("loaders reading at once parse each mesh once, and get the same parsed file") {
+    TemporaryFolder folder;
+    std::string big = "v 0 0 0\n";  // a few thousand faces, so that the parses overlap
+    for (int i = 1; i <= 3000; ++i) big += "v " + std::to_string(i) + " 1 0\nf 1 " + std::to_string(i) + " " + std::to_string(i + 1) + "\n";
+    big += "v 0 2 0\n";
+    const std::string a = folder.write("a.obj", big);
+    const std::string b = folder.write("b.obj", big + "v 5 5 5\n");
+    MeshFileCache meshes;
+    std::vector<std::shared_ptr<const io::MeshFile>> got(8);
+    std::vector<std::thread> loaders;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+        loaders.emplace_back([&, i] { got[i] = meshes.read(i % 2 == 0 ? a : b); });
+    }
+    for (std::thread& loader : loaders) loader.join();
+    CHECK(meshes.parses() == 2);
+    CHECK(meshes.files() == 2);
+    for (std::size_t i = 2; i < got.size(); ++i) CHECK(got[i].get() == got[i % 2].get());
+    CHECK(got[0]->mesh.positions.size() == 3002);
+    CHECK(got[1]->mesh.positions.size() == 3003);
+}
+
+TEST_CASE("a mesh job asking what an earlier one asked gets a copy of its scenes, made again when the mesh changes") {
+    TemporaryFolder folder;
+    folder.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.5\nf 1 2 3\nf 2 4 3\n");
+    folder.write("b.obj", "v 0 0 0\nv 2 0 0\nv 0 2 0\nf 1 2 3\n");
+    const Manifest manifest =
+        parse_manifest("{\"mesh\": \"a.obj\", \"size\": \"40x30\", \"views\": 2, \"output\": \"a1-{view}.png\"}\n"
+                       "{\"mesh\": \"b.obj\", \"size\": \"40x30\", \"output\": \"b1.png\"}\n"
+                       "{\"mesh\": \"a.obj\", \"size\": \"40x30\", \"views\": 2, \"output\": \"a2-{view}.png\"}\n"
+                       "{\"mesh\": \"a.obj\", \"size\": \"40x30\", \"views\": 3, \"output\": \"a3-{view}.png\"}\n"
+                       "{\"mesh\": \"a.obj\", \"size\": \"40x30\", \"views\": 2, \"shader\": \"gouraud\", \"output\": \"a4-{view}.png\"}\n"
+                       "{\"mesh\": \"a.obj\", \"size\": \"40x30\", \"views\": 2, \"elevation\": 30, \"output\": \"a5-{view}.png\"}\n",
+                       "jobs.jsonl", folder.file(""), JobSettings{});
+    MeshFileCache meshes;
+    JobScenesMemo memo(meshes);
+    const auto same = [](const JobScenes& x, const JobScenes& y) {
+        return x.prepared.scene.mesh.positions == y.prepared.scene.mesh.positions &&
+               x.prepared.scene.mesh.normals == y.prepared.scene.mesh.normals &&
+               x.prepared.scene.mesh.triangles == y.prepared.scene.mesh.triangles &&
+               x.prepared.scene.shader == y.prepared.scene.shader && x.cameras.size() == y.cameras.size() &&
+               std::equal(x.cameras.begin(), x.cameras.end(), y.cameras.begin(),
+                          [](const Camera& c, const Camera& d) { return c.eye == d.eye && c.lookat == d.lookat && c.sensor_height == d.sensor_height; });
+    };
+    for (std::size_t j = 0; j < manifest.jobs.size(); ++j) {
+        INFO("job " << j);
+        const JobScenes remembered = memo.load(manifest.jobs[j], 0);
+        MeshFileCache fresh;
+        CHECK(same(remembered, load_job(manifest.jobs[j], 0, &fresh)));  // what a fresh load makes
+    }
+    CHECK(memo.reuses() == 1);  // only line 3 asks what line 1 asked
+    CHECK(memo.kept() == 5);
+    CHECK(memo.load(manifest.jobs[1], 0).prepared.scene.mesh.positions.size() == 3);
+    CHECK(memo.reuses() == 2);
+
+    // An edited mesh: made again, from the new file, and kept instead of the old.
+    folder.write("b.obj", "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 2 2 1\nf 1 2 3\nf 2 4 3\n");
+    const JobScenes edited = memo.load(manifest.jobs[1], 0);
+    CHECK(edited.prepared.scene.mesh.positions.size() == 4);
+    MeshFileCache fresh;
+    CHECK(same(edited, load_job(manifest.jobs[1], 0, &fresh)));
+    CHECK(memo.reuses() == 2);
+    CHECK(memo.kept() == 5);
+    // A broken mesh fails with load_job's error, and a job with it is not kept.
+    folder.write("b.obj", "v 0 0 0\nf 1 2 3\n");
+    CHECK_THROWS_AS(memo.load(manifest.jobs[1], 0), phongrast::io::FileError);
+    CHECK_THROWS_AS(load_job(manifest.jobs[1], 0), phongrast::io::FileError);
+    CHECK(memo.reuses() == 2);
 }
