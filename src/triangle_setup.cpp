@@ -136,7 +136,9 @@ private:
         const SnappedPoint b = snap(corner[1].column, corner[1].row);
         const SnappedPoint c = snap(corner[2].column, corner[2].row);
         CoverageTriangle coverage;
-        const bool covers = setup_coverage(a, b, c, in_.view.frame.rows, in_.view.frame.columns, coverage);
+        // A box of at most 2 x 2 centres that holds none inside the triangle: between samples, as an empty box.
+        const bool covers = setup_coverage(a, b, c, in_.view.frame.rows, in_.view.frame.columns, coverage) &&
+                            may_cover_a_centre(coverage);
         if (covers || coverage.area2() != 0) outcome.has_area = true;  // set whenever the snapped area is non-zero
         if (!covers) return false;
         draw.coverage = coverage;  // what the fill reads: not `swapped`, used just below
