@@ -164,7 +164,7 @@ private:
     // The common case, nothing to clip: one piece straight from the vertex arrays.
     // `outcome` is the caller's, not a return value: GCC returned the struct
     // in a register assembled through the stack from byte stores, and the
-    // 16-bit load that read it back stalled on them (13% of set-up's samples).
+    // 16-bit load that read it back stalled on them (13% of this function's samples).
     void set_up_whole(const Triangle& tri, const Vec3<Real>& centroid, PiecesOutcome& outcome) {
         Corner<Real> corner[3];
         for (int i = 0; i < 3; ++i) {
