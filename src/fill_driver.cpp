@@ -43,6 +43,17 @@ bool overdraw_shades_visible_only(const Scene& scene, const RenderOptions& optio
     return scene.shader == Shader::phong && effects.normals;
 }
 
+/// How many draws ahead the fill asks for the varyings a draw points to:
+/// fewer than kPrefetchAhead, so that the draw itself has mostly arrived.
+constexpr std::uint32_t kCornersAhead = 4;
+
+/// A hint to load the three corners' varyings of `draw` (random places in
+/// the vertex array, in painter's order: a cache miss each on a large mesh).
+template <typename Real>
+void prefetch_corners(const FillTriangle<Real>& draw) {
+    for (const Varyings<Real>* corner : draw.v) prefetch_object(corner);
+}
+
 /// Overdraw::shade_visible for one band: pass one records which of the
 /// band's triangles paints each sample last (painter's order: the last
 /// one to cover it); pass two shades, in the same order, only the
@@ -70,6 +81,11 @@ std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const FillTriangle<
     target.owner = layer.owner.data();
     for (std::uint32_t i = 0; i < count; ++i) {
         if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return covered;
+        // Pass one read the draws long ago (a band can hold thousands): ask for the shown ones again.
+        if (i + kPrefetchAhead < count && layer.shown[i + kPrefetchAhead]) prefetch_object(draws[i + kPrefetchAhead]);
+        if (plan.reads_corners && i + kCornersAhead < count && layer.shown[i + kCornersAhead]) {
+            prefetch_corners(*draws[i + kCornersAhead]);
+        }
         if (!layer.shown[i]) continue;  // entirely painted over: no shading at all
         target.self = i;
         plan.kernel(*draws[i], target, vectors, plan.constants);
@@ -85,6 +101,7 @@ std::uint64_t fill_every_layer(const FillPlan<Real>& plan, const FillTriangle<Re
     for (std::uint32_t i = 0; i < count; ++i) {
         if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return target.covered;
         if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
+        if (plan.reads_corners && i + kCornersAhead < count) prefetch_corners(*draws[i + kCornersAhead]);
         plan.kernel(*draws[i], target, vectors, plan.constants);
     }
     return target.covered;
@@ -138,6 +155,8 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     const bool one_color = options.specialize_effects && scene.shader != Shader::gouraud && !effects.diffuse &&
                            !effects.specular && !effects.varying_colors;
     plan.order_free = one_color && !plan.depth_test && !plan.shade_visible_only && textures == nullptr;
+    plan.reads_corners = textures != nullptr ||
+                         (scene.shader == Shader::phong && (effects.normals || effects.varying_colors));
     return plan;
 }
 

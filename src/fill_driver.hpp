@@ -44,6 +44,9 @@ struct FillPlan {
     /// nothing but the image depends on which triangle wrote it last: the
     /// order of the triangles cannot change the picture, so it is not sorted.
     bool order_free = false;
+    /// The kernel reads the corners' varyings through FillTriangle::v (Phong's
+    /// colours or normals, textures' (s, t)): the fill prefetches them.
+    bool reads_corners = false;
     EffectSet effects;               ///< what the kernel evaluates (for the term counts)
 };
 

@@ -304,6 +304,19 @@ private:
     std::int64_t threshold_[3];  ///< 0 for a top or left edge, else 1
 };
 
+/// False when a set-up triangle whose bounding box holds at most 2 x 2
+/// centres covers none of them (exactly as the fill would find, with the
+/// same integer edge values); true otherwise, larger triangles untested.
+/// Set-up drops such triangles: most one-pixel triangles' boxes hold a
+/// centre, a third of them cover none, and a dropped one costs no record,
+/// no sort, no binning and no fill.
+inline bool may_cover_a_centre(const SnappedTriangle& t) {
+    if (t.row_max - t.row_min >= 2 || t.column_max - t.column_min >= 2) return true;
+    const CoveredRows rows(t, t.row_min, t.row_max + 1);
+    CoveredSpan spans[2];
+    return rows.tiny_spans(spans) > 0;
+}
+
 /// for_each_covered_span() for a triangle that is not tiny, row by row. Kept
 /// out of line, so that the tiny triangles' path keeps its values in registers.
 template <typename VisitSpan>

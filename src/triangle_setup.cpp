@@ -72,7 +72,7 @@ public:
                            screen[tri[2]].depth >= near_depth;
         PiecesOutcome outcome;
         if (whole) {
-            outcome = set_up_whole(tri, centroid);
+            set_up_whole(tri, centroid, outcome);
         } else {
             const ClipOutcome clipped = set_up_clipped(tri, centroid, inside_image, outcome);
             if (clipped != ClipOutcome::kept) {
@@ -136,7 +136,9 @@ private:
         const SnappedPoint b = snap(corner[1].column, corner[1].row);
         const SnappedPoint c = snap(corner[2].column, corner[2].row);
         CoverageTriangle coverage;
-        const bool covers = setup_coverage(a, b, c, in_.view.frame.rows, in_.view.frame.columns, coverage);
+        // A box of at most 2 x 2 centres that holds none inside the triangle: between samples, as an empty box.
+        const bool covers = setup_coverage(a, b, c, in_.view.frame.rows, in_.view.frame.columns, coverage) &&
+                            may_cover_a_centre(coverage);
         if (covers || coverage.area2() != 0) outcome.has_area = true;  // set whenever the snapped area is non-zero
         if (!covers) return false;
         draw.coverage = coverage;  // what the fill reads: not `swapped`, used just below
@@ -160,20 +162,22 @@ private:
     }
 
     // The common case, nothing to clip: one piece straight from the vertex arrays.
-    PiecesOutcome set_up_whole(const Triangle& tri, const Vec3<Real>& centroid) {
+    // `outcome` is the caller's, not a return value: GCC returned the struct
+    // in a register assembled through the stack from byte stores, and the
+    // 16-bit load that read it back stalled on them (13% of this function's samples).
+    void set_up_whole(const Triangle& tri, const Vec3<Real>& centroid, PiecesOutcome& outcome) {
         Corner<Real> corner[3];
         for (int i = 0; i < 3; ++i) {
             const ScreenVertex& s = vertices_.screen[tri[i]];
             corner[i] = {s.column, s.row, s.depth, &vertices_.varyings[tri[i]]};
         }
-        PiecesOutcome outcome;
         FillTriangle<Real> draw;
         int order[3];
-        if (!set_up_piece(corner, centroid, draw, outcome, order)) return outcome;
+        if (!set_up_piece(corner, centroid, draw, outcome, order)) return;
         if (in_parts_) {
             set_up_whole_in_parts(tri, centroid, order, draw);
             out_.push_back(draw);
-            return outcome;
+            return;
         }
         // Exact vectors: set_up_piece() copied the `lit` light_vertices() gave each vertex.
         if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid) {
@@ -188,7 +192,6 @@ private:
             }
         }
         out_.push_back(draw);
-        return outcome;
     }
 
     // A triangle crossing the image border or the near plane: clipped to a

@@ -182,12 +182,17 @@ Corners random_corners(std::mt19937& rng) {
 TEST_CASE("tiny triangles: the direct test of the bounding box finds the general path's spans and weights") {
     std::mt19937 rng(20261124);
     std::uniform_real_distribution<double> depth_range(0.5, 50.0);
-    int tiny = 0, tiny_covering_several = 0, tiny_covering_none = 0, general = 0, band_cuts = 0;
+    int tiny = 0, tiny_covering_several = 0, tiny_covering_none = 0, general = 0, band_cuts = 0, small_boxes_dropped = 0;
     for (int n = 0; n < 60000; ++n) {
         const Corners c = random_corners(rng);
         CoverageTriangle t;
         const SnappedPoint a = snap(c.x[0], c.y[0]), b = snap(c.x[1], c.y[1]), d = snap(c.x[2], c.y[2]);
         if (!setup_coverage(a, b, d, kRows, kColumns, t)) continue;
+        // Set-up's test of a small box (may_cover_a_centre) agrees with the centres covered.
+        const bool covers_some = !brute_force_spans(t, t.row_min, t.row_max).empty();
+        const bool small_box = t.row_max - t.row_min < 2 && t.column_max - t.column_min < 2;
+        REQUIRE(may_cover_a_centre(t) == (covers_some || !small_box));
+        small_boxes_dropped += small_box && !covers_some ? 1 : 0;
         // The whole image, the 16-row bands and a random cut of 1 to 3 rows through the triangle.
         const int cut_begin = t.row_min + static_cast<int>(rng() % 2);
         const int cut_end = cut_begin + 1 + static_cast<int>(rng() % 3);
@@ -224,6 +229,7 @@ TEST_CASE("tiny triangles: the direct test of the bounding box finds the general
     CHECK(tiny_covering_several > 3000);
     CHECK(general > 30000);
     CHECK(band_cuts > 15000);
+    CHECK(small_boxes_dropped > 5000);
 }
 
 TEST_CASE("tiny triangles: which bounding boxes take the direct test") {

@@ -155,3 +155,17 @@ TEST_CASE("Phong set-up keeps the centroid for the seed's light vectors, and non
     REQUIRE(exact.draws.size() == 1);
     CHECK(exact.draws[0].centroid() == glm::vec3(0.0f));
 }
+
+TEST_CASE("a small triangle whose bounding box holds a centre it does not cover is counted between samples") {
+    // Legs of 0.9 samples from (32, 32): the box holds centre (32.5, 32.5), the hypotenuse passes before it.
+    SetUpOne missing({{0.0, 0.0, 0}, {0.9 / 64, 0.0, 0}, {0.0, -0.9 / 64, 0}});
+    missing.run();
+    CHECK(missing.draws.empty());
+    CHECK(missing.counts.between_samples == 1);
+    CHECK(missing.counts.drawn == 0);
+    // Legs of 1.1 samples: the hypotenuse passes beyond the centre, which is drawn.
+    SetUpOne covering({{0.0, 0.0, 0}, {1.1 / 64, 0.0, 0}, {0.0, -1.1 / 64, 0}});
+    covering.run();
+    CHECK(covering.draws.size() == 1);
+    CHECK(covering.counts.drawn == 1);
+}
