@@ -20,7 +20,7 @@
 // (triangles culled or covering no sample) is then resident too, which a
 // frame of the 8M mesh could not afford (docs/performance.md, Memory);
 // larger frames keep plain vectors, mapped 64 KiB ahead of the writes as
-// before. The mapping is the arena's own, advice and all, and unmapped with
+// before, what a chunk leaves unwritten given back (record_pages.hpp). The mapping is the arena's own, advice and all, and unmapped with
 // it: nothing of the host's memory or settings changes.
 #ifndef PHONGRAST_SRC_CHUNK_ARENA_HPP
 #define PHONGRAST_SRC_CHUNK_ARENA_HPP

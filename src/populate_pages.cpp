@@ -30,4 +30,19 @@ bool populate_for_writing(const void* begin, std::size_t bytes) {
 #endif
 }
 
+bool release_pages(const void* begin, std::size_t bytes) {
+#if defined(__linux__)
+    if (begin == nullptr) return false;
+    static const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+    const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) / page * page;
+    const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(begin) + bytes) / page * page;
+    if (last <= first) return false;
+    return madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED) == 0;
+#else
+    (void)begin;
+    (void)bytes;
+    return false;
+#endif
+}
+
 }  // namespace phongrast::detail

@@ -26,6 +26,13 @@ namespace phongrast::detail {
 /// (for tests; callers need not care).
 bool populate_for_writing(const void* begin, std::size_t bytes);
 
+/// Gives the whole pages inside [begin, begin + bytes) back to the kernel
+/// (madvise MADV_DONTNEED): they no longer count as resident, and read as
+/// zero when touched again. Only for memory that holds nothing, such as a
+/// vector's capacity past its size. Returns whether pages were released
+/// (for tests; callers need not care); elsewhere than Linux nothing happens.
+bool release_pages(const void* begin, std::size_t bytes);
+
 template <typename Allocator, typename = void>
 struct KnowsHugePages : std::false_type {};
 template <typename Allocator>

@@ -8,7 +8,6 @@
 #include "back_faces.hpp"
 #include "clipping.hpp"
 #include "painter_order.hpp"
-#include "populate_pages.hpp"
 #include "raster.hpp"
 #include "term_counts.hpp"
 
@@ -427,33 +426,6 @@ void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, ChunkV
     TriangleSetup<Real>(input, out, clip_vertices, counts, vectors).run(source);
 }
 
-/// Maps a growing vector's reserved pages in steps of 64 KiB a little
-/// ahead of its end (populate_pages.hpp): one call per step instead of a
-/// page fault per 4 KiB, and never more than a step beyond what is written.
-/// `mapped` remembers how far, in this storage, from earlier frames too.
-template <typename T>
-class RecordPages {
-public:
-    explicit RecordPages(MappedRecords& mapped) : mapped_(mapped) {}
-
-    void map_ahead(ChunkVector<T>& records) {
-        if (records.data() != mapped_.storage) {  // new storage (first call, or grown past its reservation)
-            mapped_.storage = records.data();
-            mapped_.records = records.size();
-        }
-        // A triangle writes a few records at most (more only when clipped: then faults as before).
-        if (records.size() + kAhead <= mapped_.records || mapped_.records >= records.capacity()) return;
-        const std::size_t next = std::min(records.capacity(), std::max(mapped_.records, records.size()) + kStep);
-        populate_for_writing(records.data() + mapped_.records, (next - mapped_.records) * sizeof(T));
-        mapped_.records = next;
-    }
-
-private:
-    static constexpr std::size_t kStep = std::max<std::size_t>(1, (std::size_t(64) << 10) / sizeof(T));
-    static constexpr std::size_t kAhead = 4;
-    MappedRecords& mapped_;
-};
-
 /// New chunk vectors for `chunks` chunks (more than the list has): in one
 /// huge-page arena when the frame is small enough (chunk_arena.hpp), else
 /// on the heap as any vector. The old vectors go first: they may hold slots.
@@ -515,12 +487,13 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
                                   draws.chunk_vectors[chunk]);
         RecordPages<FillTriangle<Real>> pages(draws.chunk_mapped[chunk]);
         for (std::size_t t = begin; t < end; ++t) {
-            if (!mapped) pages.map_ahead(out);
+            if (!mapped) pages.map_ahead(out, end - t);
             const std::size_t first = out.size();
             setup.run(static_cast<std::uint32_t>(t));
             if (out.size() == first) continue;
             record_drawn(out, first, chunk, painter_key(triangles[t], screen), drawn, keys);
         }
+        if (!mapped) pages.release_unwritten(out);
         progress.piece_done();
     });
     progress.throw_if_cancelled();

@@ -13,6 +13,7 @@
 #include "closed_mesh.hpp"
 #include "draw_span.hpp"
 #include "fill_types.hpp"
+#include "record_pages.hpp"
 #include "vertex_stage.hpp"
 
 namespace phongrast::detail {
@@ -47,15 +48,6 @@ struct SetupCounts {
     std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during set-up
 };
 
-/// How many of a chunk's set-up records are mapped (populate_pages.hpp), and
-/// in which storage: kept from frame to frame, so that a Renderer maps each
-/// page once rather than asking the kernel again every frame (23 madvise
-/// calls a frame for a 10k-triangle mesh, on pages mapped long before).
-struct MappedRecords {
-    const void* storage = nullptr;
-    std::size_t records = 0;
-};
-
 /// Set-up's output, in mesh order: chunk after chunk of kSetupChunk mesh
 /// triangles, each chunk's draws in mesh order, and for each triangle that
 /// draws something its painter's-order key and where its draws are.
@@ -72,7 +64,7 @@ struct DrawList {
     std::vector<ClipVertexStore<Real>> chunk_clip_vertices;
     std::vector<SetupCounts> chunk_counts;
     std::vector<LightVectorsAt<Real>> chunk_vectors;  ///< per chunk, not per thread (see light_vertices())
-    std::vector<MappedRecords> chunk_mapped;  ///< chunk_draws' pages mapped so far
+    std::vector<MappedRecords> chunk_mapped;  ///< chunk_draws' pages mapped so far (record_pages.hpp)
 };
 
 /// Everything set-up reads.
