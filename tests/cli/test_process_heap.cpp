@@ -33,7 +33,7 @@ struct Mapping {
     std::string flags;
 };
 
-Mapping mapping_of(const void* address) {
+[[maybe_unused]] Mapping mapping_of(const void* address) {  // unused under ASan
     const auto at = reinterpret_cast<std::uintptr_t>(address);
     std::ifstream smaps("/proc/self/smaps");
     Mapping mapping;
