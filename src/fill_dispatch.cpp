@@ -1,20 +1,14 @@
-// Chooses the instruction set of the fill kernels: the baseline ones compiled
-// here, or the AVX2 ones of fill_kernels_avx2.cpp when this build has them
-// and the CPU runs them. Decided once per process; tests may override it.
+// Chooses the instruction set of the fill kernels: the baseline ones, or the
+// AVX2 ones when this build has them and the CPU runs them
+// (fill_kernel_sets.hpp). Decided once per process; tests may override it.
 #include <atomic>
 #include <stdexcept>
+#include <string>
 
-#include "fill_kernels.hpp"
 #include "fill_dispatch.hpp"
+#include "fill_kernel_sets.hpp"
 
 namespace phongrast::detail {
-
-#if PHONGRAST_HAVE_AVX2_KERNELS
-template <typename Real>
-FillKernel<Real> pick_kernel_avx2(const KernelChoice& choice);  // fill_kernels_avx2.cpp
-extern template FillKernel<float> pick_kernel_avx2<float>(const KernelChoice&);
-extern template FillKernel<double> pick_kernel_avx2<double>(const KernelChoice&);
-#endif
 
 namespace {
 
@@ -70,7 +64,7 @@ FillKernel<Real> pick_fill_kernel(const KernelChoice& choice) {
 #if PHONGRAST_HAVE_AVX2_KERNELS
     if (kernel_isa() == KernelIsa::avx2) return pick_kernel_avx2<Real>(choice);
 #endif
-    return baseline::pick_kernel<Real>(choice);
+    return pick_kernel_baseline<Real>(choice);
 }
 
 template FillKernel<float> pick_fill_kernel<float>(const KernelChoice&);

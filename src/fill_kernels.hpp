@@ -18,8 +18,8 @@
 
 #include "fill_dispatch.hpp"
 
-// This header is compiled once per instruction set: the library's sources see
-// the baseline kernels; fill_kernels_avx2.cpp defines these two macros and
+// This header is compiled once per instruction set: fill_kernels_baseline.hpp
+// includes it as it is; fill_kernels_avx2.hpp defines these two macros and
 // compiles it again for AVX2. Each compilation lives in its own namespace, so
 // no kernel of one instruction set can stand in for another's at link time.
 #ifndef PHONGRAST_FILL_ISA

@@ -3,7 +3,7 @@
 // signature. What chooses a kernel is in fill_dispatch.hpp.
 //
 // Kept apart from fill_kernels.hpp, which is compiled once per instruction
-// set (see fill_kernels_avx2.cpp): every kernel, whatever its instruction
+// set (see fill_kernels_avx2.hpp): every kernel, whatever its instruction
 // set, takes these types.
 #ifndef PHONGRAST_SRC_FILL_TYPES_HPP
 #define PHONGRAST_SRC_FILL_TYPES_HPP

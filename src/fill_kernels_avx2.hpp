@@ -1,6 +1,8 @@
 // The fill kernels of fill_kernels.hpp compiled a second time, for AVX2 (8
 // floats or 4 doubles per instruction instead of SSE2's 4 and 2), chosen at
-// run time by fill_dispatch.cpp on CPUs that have it.
+// run time by fill_dispatch.cpp on CPUs that have it. Included only by
+// fill_kernels_avx2_float.cpp and fill_kernels_avx2_double.cpp, which
+// instantiate one precision each (see fill_kernels_float.cpp for why).
 //
 // Only the kernels are compiled for AVX2: every header they use is included
 // first, outside the target region, so the inline functions and templates of
@@ -10,6 +12,9 @@
 // in namespace phongrast::detail::avx2. AVX2 without FMA, and the same
 // operations in the same order: the images are the baseline kernels' bit for
 // bit (tests/test_kernel_isa.cpp).
+#ifndef PHONGRAST_SRC_FILL_KERNELS_AVX2_HPP
+#define PHONGRAST_SRC_FILL_KERNELS_AVX2_HPP
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -33,7 +38,6 @@ FillKernel<Real> pick_kernel_avx2(const KernelChoice& choice) {
     return avx2::pick_kernel<Real>(choice);
 }
 
-template FillKernel<float> pick_kernel_avx2<float>(const KernelChoice&);
-template FillKernel<double> pick_kernel_avx2<double>(const KernelChoice&);
-
 }  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_FILL_KERNELS_AVX2_HPP
