@@ -16,6 +16,7 @@ shift
 [ $# -gt 0 ] || { echo "check_avx2_object.sh: no object file given" >&2; exit 2; }
 for object in "$@"; do
   echo "$object:"
+  [ -s "$object" ] || { echo "no such object file: '$object'" >&2; exit 1; }
   objdump -d -C --no-show-raw-insn "$object" | awk -v expect_wide="$expect_wide" '
     /^[0-9a-f]+ <.*>:$/ { name = $0; kernel = index(name, "::avx2::") > 0; if (kernel) kernels++; else others++; next }
     name != "" && /\t/ {
