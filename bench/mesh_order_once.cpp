@@ -33,6 +33,11 @@ struct Settings {
     std::string scene = "icosphere-1.3M", shader = "gouraud";
     int threads = 1, repeat = 5, rows = 0;
     bool computed_normals = false, sweep = false;
+    /// Only a Renderer with the reordering on (no "not reordered", no render()):
+    /// the goal's ratio in a third of the time, and a profile of that path alone.
+    bool renderer_only = false;
+    /// The orders timed (default: all of mesh_order_names()).
+    std::vector<std::string> orders;
 };
 
 /// One way of rendering: an order, reordering on or off, Renderer or render().
@@ -84,15 +89,18 @@ phongrast::Scene base_scene(const Settings& s, const std::string& name, int rows
 void run_orders(const Settings& s) {
     const phongrast::Scene base = base_scene(s, s.scene, s.rows);
     std::vector<Contender> contenders;
-    for (const std::string& order : phongrast_bench::mesh_order_names()) {
+    std::size_t spatial_index = 0;  // the ratios' baseline: spatial, Renderer (else the first contender)
+    for (const std::string& order : s.orders.empty() ? phongrast_bench::mesh_order_names() : s.orders) {
         phongrast::Scene scene = base;
         scene.mesh = in_mesh_order(base.mesh, order);
+        if (order == "spatial") spatial_index = contenders.size();
         contenders.push_back({order + ", Renderer", scene, true, false});
+        if (s.renderer_only) continue;
         contenders.push_back({order + ", Renderer, not reordered", scene, false, false});
         contenders.push_back({order + ", render()", scene, true, true});
     }
     const std::vector<double> ms = time_contenders(contenders, options_for(s), s.repeat);
-    const double spatial = ms[3];  // spatial, Renderer
+    const double spatial = ms[spatial_index];
     std::printf("\n%s, %zu triangles, %dx%d, %s, %s normals, %d thread(s), median of %d interleaved rounds\n\n",
                 s.scene.c_str(), base.mesh.triangles.size(), base.image.columns, base.image.rows, s.shader.c_str(),
                 s.computed_normals ? "computed" : "given", s.threads, s.repeat);
@@ -157,6 +165,9 @@ int main(int argc, char** argv) {
     app.add_option("--threads", s.threads, "threads")->check(CLI::Range(1, 256));
     app.add_option("--repeat", s.repeat, "timed rounds (median)")->check(CLI::Range(1, 1000));
     app.add_flag("--computed-normals", s.computed_normals, "drop the mesh's normals: computed on every frame");
+    app.add_flag("--renderer-only", s.renderer_only, "only a Renderer with the reordering on, for each order");
+    app.add_option("--orders", s.orders, "orders to time (generator, spatial, shuffled; default all)")
+        ->delimiter(',');
     app.add_flag("--sweep", s.sweep, "icospheres of 5k-330k triangles: where reordering starts to pay");
     CLI11_PARSE(app, argc, argv);
     try {
