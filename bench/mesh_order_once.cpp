@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,8 @@ struct Settings {
     bool renderer_only = false;
     /// The orders timed (default: all of mesh_order_names()).
     std::vector<std::string> orders;
+    /// Prefix of the files of each contender's last image (empty: none).
+    std::string dump;
 };
 
 /// One way of rendering: an order, reordering on or off, Renderer or render().
@@ -47,9 +50,28 @@ struct Contender {
     bool reorder = true, one_off = false;
 };
 
+/// The image's raw float RGB pixels written to `path` (to compare builds and orders with cmp).
+void dump_pixels(const std::string& path, const phongrast::Image& image) {
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) throw std::runtime_error("--dump: cannot write " + path);
+    std::fwrite(image.pixels.data(), sizeof(glm::vec3), image.pixels.size(), file);
+    std::fclose(file);
+}
+
+/// `label` as a file name: "shuffled, Renderer, not reordered" -> "shuffled-Renderer-not-reordered".
+std::string file_name_of(const std::string& label) {
+    std::string name;
+    for (char c : label) {
+        if (c == ',' || c == '(' || c == ')') continue;
+        name += c == ' ' ? '-' : c;
+    }
+    return name;
+}
+
 /// Reordering as the library does it by default (both thresholds, the locality test).
+/// With `dump`, each contender's last image is written to dump + its label + ".rgb".
 std::vector<double> time_contenders(std::vector<Contender>& contenders, const phongrast::RenderOptions& options,
-                                   int repeat) {
+                                   int repeat, const std::string& dump = {}) {
     const std::size_t defaults = phongrast::detail::set_reorder_min_triangles(0);
     phongrast::detail::set_reorder_min_triangles(defaults);
     std::vector<phongrast::Renderer> renderers;
@@ -59,14 +81,17 @@ std::vector<double> time_contenders(std::vector<Contender>& contenders, const ph
         calls.push_back([&, k] {
             const Contender& c = contenders[k];
             const std::size_t previous = phongrast::detail::set_reorder_min_triangles(c.reorder ? defaults : kNever);
+            phongrast::RenderResult one_off;  // render()'s, kept for --dump (destroyed after the timing)
+            const phongrast::RenderResult* last = &one_off;
             const double ms = support::time_ms([&] {
                 if (c.one_off) {
-                    phongrast::render(c.scene, options);
+                    one_off = phongrast::render(c.scene, options);
                 } else {
-                    renderers[k].render(c.scene);
+                    last = &renderers[k].render(c.scene);
                 }
             });
             phongrast::detail::set_reorder_min_triangles(previous);
+            if (!dump.empty()) dump_pixels(dump + file_name_of(c.label) + ".rgb", last->image);
             return ms;
         });
     }
@@ -99,7 +124,7 @@ void run_orders(const Settings& s) {
         contenders.push_back({order + ", Renderer, not reordered", scene, false, false});
         contenders.push_back({order + ", render()", scene, true, true});
     }
-    const std::vector<double> ms = time_contenders(contenders, options_for(s), s.repeat);
+    const std::vector<double> ms = time_contenders(contenders, options_for(s), s.repeat, s.dump);
     const double spatial = ms[spatial_index];
     std::printf("\n%s, %zu triangles, %dx%d, %s, %s normals, %d thread(s), median of %d interleaved rounds\n\n",
                 s.scene.c_str(), base.mesh.triangles.size(), base.image.columns, base.image.rows, s.shader.c_str(),
@@ -168,6 +193,8 @@ int main(int argc, char** argv) {
     app.add_flag("--renderer-only", s.renderer_only, "only a Renderer with the reordering on, for each order");
     app.add_option("--orders", s.orders, "orders to time (generator, spatial, shuffled; default all)")
         ->delimiter(',');
+    app.add_option("--dump", s.dump,
+                   "write each contender's last image's raw float RGB pixels to this prefix + its label + .rgb");
     app.add_flag("--sweep", s.sweep, "icospheres of 5k-330k triangles: where reordering starts to pay");
     CLI11_PARSE(app, argc, argv);
     try {
