@@ -8,6 +8,7 @@
 // icospheres of several sizes with every mesh reordered, whatever its
 // order, against none, to place the threshold of triangles.
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -41,7 +42,26 @@ struct Settings {
     std::vector<std::string> orders;
     /// Prefix of the files of each contender's last image (empty: none).
     std::string dump;
+    /// Each render timed by the process's CPU time, not the wall clock.
+    bool cpu_time = false;
 };
+
+/// The process's CPU time in milliseconds (every thread's).
+double process_cpu_ms() {
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
+}
+
+bool g_cpu_time = false;
+
+/// `work`'s wall time in milliseconds, or with --cpu-time the CPU time the process spent in it.
+double time_work_ms(const std::function<void()>& work) {
+    if (!g_cpu_time) return support::time_ms(work);
+    const double start = process_cpu_ms();
+    work();
+    return process_cpu_ms() - start;
+}
 
 /// One way of rendering: an order, reordering on or off, Renderer or render().
 struct Contender {
@@ -83,7 +103,7 @@ std::vector<double> time_contenders(std::vector<Contender>& contenders, const ph
             const std::size_t previous = phongrast::detail::set_reorder_min_triangles(c.reorder ? defaults : kNever);
             phongrast::RenderResult one_off;  // render()'s, kept for --dump (destroyed after the timing)
             const phongrast::RenderResult* last = &one_off;
-            const double ms = support::time_ms([&] {
+            const double ms = time_work_ms([&] {
                 if (c.one_off) {
                     one_off = phongrast::render(c.scene, options);
                 } else {
@@ -126,10 +146,10 @@ void run_orders(const Settings& s) {
     }
     const std::vector<double> ms = time_contenders(contenders, options_for(s), s.repeat, s.dump);
     const double spatial = ms[spatial_index];
-    std::printf("\n%s, %zu triangles, %dx%d, %s, %s normals, %d thread(s), median of %d interleaved rounds\n\n",
+    std::printf("\n%s, %zu triangles, %dx%d, %s, %s normals, %d thread(s), median of %d interleaved rounds%s\n\n",
                 s.scene.c_str(), base.mesh.triangles.size(), base.image.columns, base.image.rows, s.shader.c_str(),
-                s.computed_normals ? "computed" : "given", s.threads, s.repeat);
-    std::printf("| mesh order, how | ms | / spatial (Renderer) |\n|---|---:|---:|\n");
+                s.computed_normals ? "computed" : "given", s.threads, s.repeat, s.cpu_time ? ", CPU time" : "");
+    std::printf("| mesh order, how | %s | / spatial (Renderer) |\n|---|---:|---:|\n", s.cpu_time ? "CPU ms" : "ms");
     for (std::size_t k = 0; k < contenders.size(); ++k) {
         std::printf("| %s | %.1f | %.3f |\n", contenders[k].label.c_str(), ms[k], ms[k] / spatial);
     }
@@ -195,8 +215,11 @@ int main(int argc, char** argv) {
         ->delimiter(',');
     app.add_option("--dump", s.dump,
                    "write each contender's last image's raw float RGB pixels to this prefix + its label + .rgb");
+    app.add_flag("--cpu-time", s.cpu_time,
+                 "time each render by the process's CPU time (less disturbed by other work on a loaded machine)");
     app.add_flag("--sweep", s.sweep, "icospheres of 5k-330k triangles: where reordering starts to pay");
     CLI11_PARSE(app, argc, argv);
+    g_cpu_time = s.cpu_time;
     try {
         if (s.sweep) {
             run_sweep(s);
