@@ -8,8 +8,10 @@
 // icospheres of several sizes with every mesh reordered, whatever its
 // order, against none, to place the threshold of triangles.
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,7 +35,33 @@ struct Settings {
     std::string scene = "icosphere-1.3M", shader = "gouraud";
     int threads = 1, repeat = 5, rows = 0;
     bool computed_normals = false, sweep = false;
+    /// Only a Renderer with the reordering on (no "not reordered", no render()):
+    /// the goal's ratio in a third of the time, and a profile of that path alone.
+    bool renderer_only = false;
+    /// The orders timed (default: all of mesh_order_names()).
+    std::vector<std::string> orders;
+    /// Prefix of the files of each contender's last image (empty: none).
+    std::string dump;
+    /// Each render timed by the process's CPU time, not the wall clock.
+    bool cpu_time = false;
 };
+
+/// The process's CPU time in milliseconds (every thread's).
+double process_cpu_ms() {
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
+}
+
+bool g_cpu_time = false;
+
+/// `work`'s wall time in milliseconds, or with --cpu-time the CPU time the process spent in it.
+double time_work_ms(const std::function<void()>& work) {
+    if (!g_cpu_time) return support::time_ms(work);
+    const double start = process_cpu_ms();
+    work();
+    return process_cpu_ms() - start;
+}
 
 /// One way of rendering: an order, reordering on or off, Renderer or render().
 struct Contender {
@@ -42,9 +70,28 @@ struct Contender {
     bool reorder = true, one_off = false;
 };
 
+/// The image's raw float RGB pixels written to `path` (to compare builds and orders with cmp).
+void dump_pixels(const std::string& path, const phongrast::Image& image) {
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) throw std::runtime_error("--dump: cannot write " + path);
+    std::fwrite(image.pixels.data(), sizeof(glm::vec3), image.pixels.size(), file);
+    std::fclose(file);
+}
+
+/// `label` as a file name: "shuffled, Renderer, not reordered" -> "shuffled-Renderer-not-reordered".
+std::string file_name_of(const std::string& label) {
+    std::string name;
+    for (char c : label) {
+        if (c == ',' || c == '(' || c == ')') continue;
+        name += c == ' ' ? '-' : c;
+    }
+    return name;
+}
+
 /// Reordering as the library does it by default (both thresholds, the locality test).
+/// With `dump`, each contender's last image is written to dump + its label + ".rgb".
 std::vector<double> time_contenders(std::vector<Contender>& contenders, const phongrast::RenderOptions& options,
-                                   int repeat) {
+                                   int repeat, const std::string& dump = {}) {
     const std::size_t defaults = phongrast::detail::set_reorder_min_triangles(0);
     phongrast::detail::set_reorder_min_triangles(defaults);
     std::vector<phongrast::Renderer> renderers;
@@ -54,14 +101,17 @@ std::vector<double> time_contenders(std::vector<Contender>& contenders, const ph
         calls.push_back([&, k] {
             const Contender& c = contenders[k];
             const std::size_t previous = phongrast::detail::set_reorder_min_triangles(c.reorder ? defaults : kNever);
-            const double ms = support::time_ms([&] {
+            phongrast::RenderResult one_off;  // render()'s, kept for --dump (destroyed after the timing)
+            const phongrast::RenderResult* last = &one_off;
+            const double ms = time_work_ms([&] {
                 if (c.one_off) {
-                    phongrast::render(c.scene, options);
+                    one_off = phongrast::render(c.scene, options);
                 } else {
-                    renderers[k].render(c.scene);
+                    last = &renderers[k].render(c.scene);
                 }
             });
             phongrast::detail::set_reorder_min_triangles(previous);
+            if (!dump.empty()) dump_pixels(dump + file_name_of(c.label) + ".rgb", last->image);
             return ms;
         });
     }
@@ -84,19 +134,22 @@ phongrast::Scene base_scene(const Settings& s, const std::string& name, int rows
 void run_orders(const Settings& s) {
     const phongrast::Scene base = base_scene(s, s.scene, s.rows);
     std::vector<Contender> contenders;
-    for (const std::string& order : phongrast_bench::mesh_order_names()) {
+    std::size_t spatial_index = 0;  // the ratios' baseline: spatial, Renderer (else the first contender)
+    for (const std::string& order : s.orders.empty() ? phongrast_bench::mesh_order_names() : s.orders) {
         phongrast::Scene scene = base;
         scene.mesh = in_mesh_order(base.mesh, order);
+        if (order == "spatial") spatial_index = contenders.size();
         contenders.push_back({order + ", Renderer", scene, true, false});
+        if (s.renderer_only) continue;
         contenders.push_back({order + ", Renderer, not reordered", scene, false, false});
         contenders.push_back({order + ", render()", scene, true, true});
     }
-    const std::vector<double> ms = time_contenders(contenders, options_for(s), s.repeat);
-    const double spatial = ms[3];  // spatial, Renderer
-    std::printf("\n%s, %zu triangles, %dx%d, %s, %s normals, %d thread(s), median of %d interleaved rounds\n\n",
+    const std::vector<double> ms = time_contenders(contenders, options_for(s), s.repeat, s.dump);
+    const double spatial = ms[spatial_index];
+    std::printf("\n%s, %zu triangles, %dx%d, %s, %s normals, %d thread(s), median of %d interleaved rounds%s\n\n",
                 s.scene.c_str(), base.mesh.triangles.size(), base.image.columns, base.image.rows, s.shader.c_str(),
-                s.computed_normals ? "computed" : "given", s.threads, s.repeat);
-    std::printf("| mesh order, how | ms | / spatial (Renderer) |\n|---|---:|---:|\n");
+                s.computed_normals ? "computed" : "given", s.threads, s.repeat, s.cpu_time ? ", CPU time" : "");
+    std::printf("| mesh order, how | %s | / spatial (Renderer) |\n|---|---:|---:|\n", s.cpu_time ? "CPU ms" : "ms");
     for (std::size_t k = 0; k < contenders.size(); ++k) {
         std::printf("| %s | %.1f | %.3f |\n", contenders[k].label.c_str(), ms[k], ms[k] / spatial);
     }
@@ -157,8 +210,16 @@ int main(int argc, char** argv) {
     app.add_option("--threads", s.threads, "threads")->check(CLI::Range(1, 256));
     app.add_option("--repeat", s.repeat, "timed rounds (median)")->check(CLI::Range(1, 1000));
     app.add_flag("--computed-normals", s.computed_normals, "drop the mesh's normals: computed on every frame");
+    app.add_flag("--renderer-only", s.renderer_only, "only a Renderer with the reordering on, for each order");
+    app.add_option("--orders", s.orders, "orders to time (generator, spatial, shuffled; default all)")
+        ->delimiter(',');
+    app.add_option("--dump", s.dump,
+                   "write each contender's last image's raw float RGB pixels to this prefix + its label + .rgb");
+    app.add_flag("--cpu-time", s.cpu_time,
+                 "time each render by the process's CPU time (less disturbed by other work on a loaded machine)");
     app.add_flag("--sweep", s.sweep, "icospheres of 5k-330k triangles: where reordering starts to pay");
     CLI11_PARSE(app, argc, argv);
+    g_cpu_time = s.cpu_time;
     try {
         if (s.sweep) {
             run_sweep(s);

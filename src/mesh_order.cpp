@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstring>
 #include <limits>
 
 #include <glm/common.hpp>
@@ -17,6 +18,8 @@ namespace {
 
 /// Elements gathered by one task.
 constexpr std::size_t kGatherBlock = 16384;
+/// Triangles compared or copied by one task (1.5 MiB).
+constexpr std::size_t kCompareBlock = 131072;
 
 /// out[i] = in[source[i]] for every i, in parallel; `out` resized (its memory reused).
 template <typename T>
@@ -38,6 +41,41 @@ void gather(const std::vector<T>& in, const std::vector<std::uint32_t>& source, 
 void gather_corner_indices(const std::vector<Triangle>& in, const std::vector<std::uint32_t>& source,
                            std::vector<Triangle>& out) {
     gather(in, source, out, nullptr);
+}
+
+/// Whether two triangle lists are the same, bit for bit, compared in parallel.
+bool same_triangles(const std::vector<Triangle>& a, const std::vector<Triangle>& b) {
+    if (a.size() != b.size()) return false;
+    std::atomic<bool> differ{false};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, a.size(), kCompareBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        if (differ.load(std::memory_order_relaxed)) return;
+        if (std::memcmp(a.data() + range.begin(), b.data() + range.begin(), range.size() * sizeof(Triangle)) != 0) {
+            differ.store(true, std::memory_order_relaxed);
+        }
+    });
+    return !differ.load();
+}
+
+/// out = in, in parallel, growing `out` with polls (resize_polling()).
+void copy_polling(const std::vector<Triangle>& in, std::vector<Triangle>& out, const std::function<void()>& poll) {
+    resize_polling(out, in.size(), poll);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, in.size(), kCompareBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        std::memcpy(out.data() + range.begin(), in.data() + range.begin(), range.size() * sizeof(Triangle));
+    });
+}
+
+/// The copy's triangles: the caller's, in the permutation's order, naming the copy's vertices.
+void copy_triangles(const Mesh& mesh, const MeshOrder& order, std::vector<Triangle>& out) {
+    out.resize(mesh.triangles.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), kGatherBlock),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k) {
+            const Triangle& tri = mesh.triangles[order.triangle_source[k]];
+            out[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+        }
+    });
 }
 
 /// Cells per axis of the spatial sort's grid.
@@ -165,6 +203,7 @@ double local_order_misses(const Mesh& mesh) {
 
 void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll) {
     order.vertex_corners_made = false;  // made for the permutation being replaced
+    order.triangles_copied = false;
     const auto report = [&poll] {
         if (poll) poll();
     };
@@ -269,6 +308,8 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
             order.vertex_target.clear();
             order.vertex_source.clear();
             order.vertex_corners_made = false;
+            order.triangles_copied = false;
+            std::vector<Triangle>().swap(order.triangles_snapshot);
         } else {
             // Forgotten first: a cancel inside compute_mesh_order (RenderCancelled from
             // `poll`) leaves half-written permutations that must not pass for this mesh's.
@@ -291,25 +332,20 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
     gather(mesh.positions, order.vertex_source, out.positions, poll);
     gather(mesh.colors, order.vertex_source, out.colors, poll);
     report();
-    // The corner list holds while the copy's triangles are those it was made
-    // with: each frame compares the new copy with the last (the old value is
-    // read where it is overwritten), so an edit in place, even one drawn by a
-    // frame that computed no normals, makes the list again.
-    const bool compare = order.vertex_corners_made && out.triangles.size() == mesh.triangles.size();
-    std::atomic<bool> triangles_changed{false};
-    out.triangles.resize(mesh.triangles.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.triangles.size(), kGatherBlock),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-        bool changed = false;
-        for (std::size_t k = range.begin(); k != range.end(); ++k) {
-            const Triangle& tri = mesh.triangles[order.triangle_source[k]];
-            const Triangle copied = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
-            changed |= compare && out.triangles[k] != copied;
-            out.triangles[k] = copied;
-        }
-        if (changed) triangles_changed.store(true, std::memory_order_relaxed);
-    });
-    if (triangles_changed.load()) order.vertex_corners_made = false;
+    // The copy's triangles depend on the caller's triangles and the
+    // permutation only: made again when the caller's differ from the snapshot
+    // they were made from (a sequential comparison, where making them reads
+    // the caller's triangles and vertex_target at random), else kept. The
+    // corner list, made for those triangles, is made again with them.
+    if (!order.triangles_copied || !same_triangles(mesh.triangles, order.triangles_snapshot)) {
+        order.triangles_copied = false;  // until both are whole (a cancel may stop it halfway)
+        order.vertex_corners_made = false;
+        copy_triangles(mesh, order, out.triangles);
+        ++order.triangles_made;
+        if (poll) poll();
+        copy_polling(mesh.triangles, order.triangles_snapshot, poll);
+        order.triangles_copied = true;
+    }
     report();
     // The normals the pipeline would compute from the caller's mesh (all of
     // them, or where a user normal is zero: "compute this one"), computed here

@@ -18,10 +18,12 @@
 // mesh's bits while every read stays local.
 //
 // What a Renderer keeps: the permutation, computed once per mesh (the
-// expensive part: a spatial sort), and the reordered copy's memory. The
-// copy is rebuilt from the caller's arrays on every frame, so a mesh edited
-// in place between frames is never drawn stale: only the permutation is
-// reused, and any permutation gives the same picture. Whether the
+// expensive part: a spatial sort), and the reordered copy. The copy's
+// vertex arrays are gathered from the caller's on every frame; its triangles
+// (whose making reads the caller's at random) are kept while the caller's
+// compare equal, every frame, to a snapshot of those they were made from. So
+// a mesh edited in place between frames is never drawn stale: only the
+// permutation is reused, and any permutation gives the same picture. Whether the
 // permutation is reused is decided by the mesh's identity (the arrays'
 // addresses and sizes and a sample of its triangles); guessing wrong costs
 // speed only, never correctness.
@@ -88,14 +90,19 @@ struct MeshOrder {
 
     /// The caller's index of each triangle the pipeline sees, or null when it sees the caller's mesh.
     const std::uint32_t* original_triangles() const { return reordered ? triangle_source.data() : nullptr; }
-    /// The caller's scene with the mesh in internal order, rebuilt every frame.
+    /// The caller's scene with the mesh in internal order: vertex arrays
+    /// gathered every frame, triangles made when the caller's changed.
     Scene scene;
     NormalsScratch normals_scratch;
+    /// The caller's triangles as they were when the copy's (scene.mesh.triangles)
+    /// were made: while they compare equal, the copy's are kept (made again
+    /// otherwise, and after a new permutation: triangles_copied false).
+    std::vector<Triangle> triangles_snapshot;
+    bool triangles_copied = false;
     /// Computed normals: each vertex's corners in the caller's order of
     /// triangles, for the permutation in force and the copy's triangles
     /// (made once per mesh, on the first frame that computes normals; made
-    /// again once a frame's copy of the triangles differs from the last's:
-    /// the mesh was edited in place).
+    /// again after the copy's triangles were: the mesh was edited in place).
     VertexCorners vertex_corners;
     bool vertex_corners_made = false;
     /// Normals computed in the caller's order, then permuted: only for a mesh
@@ -103,6 +110,8 @@ struct MeshOrder {
     std::vector<glm::vec3> normals;
     /// Permutations computed so far (tests: a Renderer computes one per mesh).
     std::size_t permutations_computed = 0;
+    /// Times the copy's triangles were made (tests: once per permutation and edit).
+    std::size_t triangles_made = 0;
 
     /// The next frame computes its permutation anew (the memory is kept): for
     /// render()'s warm state, whose callers' meshes may reuse a freed mesh's address.

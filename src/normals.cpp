@@ -14,6 +14,7 @@
 #include "normals.hpp"
 #include "phongrast/lighting.hpp"
 #include "phongrast/mesh.hpp"
+#include "prefetch.hpp"
 #include "resize_polling.hpp"
 
 namespace phongrast {
@@ -47,8 +48,9 @@ const FrameVector<glm::dvec4>& compute_faces(const std::vector<glm::dvec3>& posi
 }
 
 /// One face added to a vertex: its sum, and its largest face for the fallback.
-/// Both ways of computing normals add through here, so in the same order they
-/// give the same bits.
+/// Both ways of computing normals add through here or add_face_selected(),
+/// which do the same operations on the same values: in the same order, the
+/// same bits.
 inline void add_face(const glm::dvec4& face, glm::dvec3& sum, double& largest_area, glm::dvec3& largest_face) {
     const double twice_area = face.w;
     if (twice_area < 0.0) return;  // not finite
@@ -58,6 +60,30 @@ inline void add_face(const glm::dvec4& face, glm::dvec3& sum, double& largest_ar
         largest_face = glm::dvec3(face);
     }
 }
+
+/// add_face() without branches: the sum and the largest face selected, not
+/// jumped over. For the corner lists' walk, where each vertex adds its six or
+/// so faces in a row and the comparison's mispredictions cost more than the
+/// selects (the pass over triangles, whose sums live in memory, is faster
+/// with the branches).
+inline void add_face_selected(const glm::dvec4& face, glm::dvec3& sum, double& largest_area, glm::dvec3& largest_face) {
+    const double twice_area = face.w;
+    const bool finite = twice_area >= 0.0;  // add_face()'s "not < 0": w is never NaN
+    const glm::dvec3 added = sum + glm::dvec3(face);
+    sum.x = finite ? added.x : sum.x;
+    sum.y = finite ? added.y : sum.y;
+    sum.z = finite ? added.z : sum.z;
+    const bool larger = finite & (twice_area > largest_area);
+    largest_area = larger ? twice_area : largest_area;
+    largest_face.x = larger ? face.x : largest_face.x;
+    largest_face.y = larger ? face.y : largest_face.y;
+    largest_face.z = larger ? face.z : largest_face.z;
+}
+
+/// Corners ahead whose face the corner lists' walk prefetches: a vertex's
+/// faces lie near each other, but a list often reaches back to faces far
+/// behind (a neighbouring cell of the spatial sort).
+constexpr std::size_t kCornersAhead = 32;
 
 /// A vertex's normal from its sum of faces.
 inline glm::vec3 vertex_normal(const glm::dvec3& sum, double largest_area, const glm::dvec3& largest_face) {
@@ -141,6 +167,7 @@ bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, cons
     }
     const FrameVector<glm::dvec4>& faces = compute_faces(positions, triangles, scratch, poll);
     resize_polling(normals, vertex_count, poll);
+    const std::size_t corner_count = corners.corners.size();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_count, kBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t vertex = range.begin(); vertex != range.end(); ++vertex) {
@@ -148,7 +175,8 @@ bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, cons
             double largest_area = 0.0;
             const std::uint32_t end = corners.first[vertex + 1];
             for (std::uint32_t k = corners.first[vertex]; k < end; ++k) {
-                add_face(faces[corners.corners[k] >> 2], sum, largest_area, largest_face);
+                if (k + kCornersAhead < corner_count) prefetch_address(&faces[corners.corners[k + kCornersAhead] >> 2]);
+                add_face_selected(faces[corners.corners[k] >> 2], sum, largest_area, largest_face);
             }
             normals[vertex] = vertex_normal(sum, largest_area, largest_face);
         }

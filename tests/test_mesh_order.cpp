@@ -2,7 +2,8 @@
 // bits as the same mesh rendered in its own order (the path every mesh below
 // the threshold takes), in every shader and mode, with the depth buffer, and
 // in every extra output; painter's ties keep the caller's order; a Renderer
-// never draws a mesh edited in place from a stale copy.
+// never draws a mesh edited in place from a stale copy, and makes the copy's
+// triangles again only after such an edit.
 #include <algorithm>
 #include <cstring>
 #include <functional>
@@ -308,6 +309,72 @@ TEST_CASE("the permutation is computed once per mesh, again for another mesh") {
     culling.back_faces = BackFaces::cull_when_hidden;
     CHECK(&detail::scene_in_render_order(scene, culling, false, order) == &scene);
     CHECK(order.original_triangles() == nullptr);
+}
+
+TEST_CASE("the copy's triangles are kept while the caller's compare equal, made again after an edit in place") {
+    ReorderThreshold always(0);
+    Scene scene = sphere_scene(shuffled_vertices(shuffled_faces(test_meshes::icosphere(11, 0.08), 16), 17));
+    const RenderOptions options = RenderOptions::exact();
+    detail::MeshOrder order;
+    // The copy's triangles under order's permutation (a fresh one could differ
+    // once triangles moved: any permutation gives the same picture).
+    const auto expected_copy = [&] {
+        std::vector<Triangle> copy(scene.mesh.triangles.size());
+        for (std::size_t k = 0; k < copy.size(); ++k) {
+            const Triangle& tri = scene.mesh.triangles[order.triangle_source[k]];
+            copy[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+        }
+        return copy;
+    };
+    detail::scene_in_render_order(scene, options, false, order);
+    CHECK(order.triangles_made == 1);
+    CHECK(order.triangles_snapshot == scene.mesh.triangles);
+    // Positions moved: the triangles are kept.
+    for (glm::dvec3& p : scene.mesh.positions) p *= 0.9;
+    const Scene* drawn = &detail::scene_in_render_order(scene, options, false, order);
+    CHECK(order.triangles_made == 1);
+    CHECK(drawn->mesh.triangles == expected_copy());
+    // Each edit in place, however small, is drawn: the copy is made again. (Odd
+    // triangles: the mesh's identity samples every second one of these 2,420,
+    // and an edit there would compute a new permutation, hiding the comparison.)
+    REQUIRE(scene.mesh.triangles.size() == 2420);
+    const auto edits = std::vector<std::pair<std::string, std::function<void(std::vector<Triangle>&)>>>{
+        {"two corners of a triangle swapped", [](std::vector<Triangle>& t) { std::swap(t[1][0], t[1][1]); }},
+        {"the last triangle's last corner moved", [](std::vector<Triangle>& t) { t[2419][2] = t[2419][0]; }},
+        {"two triangles swapped", [](std::vector<Triangle>& t) { std::swap(t[17], t[1001]); }},
+    };
+    std::size_t made = 1;
+    for (const auto& [name, edit] : edits) {
+        INFO(name);
+        edit(scene.mesh.triangles);
+        drawn = &detail::scene_in_render_order(scene, options, false, order);
+        CHECK(order.permutations_computed == 1);
+        CHECK(order.triangles_made == ++made);
+        CHECK(drawn->mesh.triangles == expected_copy());
+        CHECK(order.triangles_snapshot == scene.mesh.triangles);
+        // Drawn again unchanged: kept.
+        detail::scene_in_render_order(scene, options, false, order);
+        CHECK(order.triangles_made == made);
+    }
+    // A cancel while they are made (at the first poll that finds them not
+    // whole) leaves them taken for not made: the next frame makes them.
+    std::swap(scene.mesh.triangles[5][1], scene.mesh.triangles[5][2]);
+    REQUIRE(order.permutations_computed == 1);
+    const std::function<void()> cancel_while_made = [&order] {
+        if (!order.triangles_copied) throw RenderCancelled();
+    };
+    CHECK_THROWS_AS(detail::scene_in_render_order(scene, options, false, order, cancel_while_made), RenderCancelled);
+    CHECK_FALSE(order.triangles_copied);
+    drawn = &detail::scene_in_render_order(scene, options, false, order);
+    CHECK(order.permutations_computed == 1);
+    CHECK(order.triangles_made == made + 2);
+    CHECK(order.triangles_copied);
+    CHECK(drawn->mesh.triangles == expected_copy());
+    // A new permutation makes them again, even for the same triangles.
+    order.forget_mesh();
+    detail::scene_in_render_order(scene, options, false, order);
+    CHECK(order.permutations_computed == 2);
+    CHECK(order.triangles_made == made + 3);
 }
 
 TEST_CASE("a cancel inside the mesh order stops it there and leaves no half-made permutation") {
