@@ -50,7 +50,9 @@ private:
 };
 
 struct LoadedJob {
-    std::unique_ptr<JobScenes> scenes;  ///< null when loading failed
+    /// Null when loading failed. Lent by JobScenesMemo: a lane changes only
+    /// the camera, lights and options (which the memo puts back).
+    std::shared_ptr<JobScenes> scenes;
     std::string error;
 };
 
@@ -261,7 +263,7 @@ void load_ahead(const std::vector<const BatchJob*>& jobs, std::size_t first, std
     for (std::size_t position = first + offset; position < jobs.size(); position += stride) {
         LoadedJob job;
         try {
-            job.scenes = std::make_unique<JobScenes>(scenes.load(*jobs[position], threads));
+            job.scenes = scenes.load(*jobs[position], threads);
         } catch (const std::exception& error) {
             job.error = error.what();
         }
@@ -422,12 +424,12 @@ void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, con
     const int lanes = one_lane ? 1 : lane_count(threads);
     // One loader per lane, up to 2 (one with a single lane, as before the lanes).
     const std::size_t loaders = lanes > 1 ? 2 : 1;
+    MeshFileCache meshes;  // every mesh parsed once per shard, while memory allows
+    JobScenesMemo scenes(meshes);  // and each job's scenes made once (before `loaded`, whose jobs it lent)
     OrderedLoads loaded(first, static_cast<std::size_t>(std::max(2, lanes)));
     OrderedWrites pending(first, 4);
     RenderGate gate(first);
     SpareImages spares;
-    MeshFileCache meshes;  // every mesh parsed once per shard, while memory allows
-    JobScenesMemo scenes(meshes);  // and each job's scenes made once
     std::vector<std::thread> loader_threads;
     for (std::size_t offset = 0; offset < loaders; ++offset) {
         loader_threads.emplace_back([&, offset] { load_ahead(jobs, first, offset, loaders, threads, scenes, loaded); });
