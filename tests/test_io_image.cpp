@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 
 #include "io/png_bytes.hpp"
+#include "io/png_encoder.hpp"
 #include "io_test_files.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/io/auto_scene.hpp"
@@ -121,6 +122,29 @@ TEST_CASE("files are written with a new file's permissions (0666 less the umask)
         CHECK((status.st_mode & 0777) == 0640);
     }
     CHECK(folder.entry_count() == 3);
+}
+
+TEST_CASE("the PNG writer's file holds exactly the encoded PNG, into a new empty file or over longer contents") {
+    // It opens its file without O_TRUNC (ext4 would write a file truncated to
+    // zero out on close); a file that is not empty is still truncated first.
+    TemporaryFolder folder;
+    const std::vector<std::uint8_t> rgb = {0, 128, 255, 10, 20, 30, 200, 100, 50, 1, 2, 3};
+    io::detail::PngPixels pixels;
+    pixels.data = rgb.data();
+    pixels.rows = 2;
+    pixels.columns = 2;
+    const io::detail::PngSettings settings = io::detail::png_settings(io::PngCompression::standard);
+    const std::string expected = io::detail::encode_png(pixels, settings);
+    const std::string fresh = folder.file("fresh.png");
+    { std::ofstream create(fresh, std::ios::binary); }
+    io::detail::write_png(fresh, fresh, pixels, settings);
+    CHECK(contents(fresh) == expected);
+    const std::string longer = folder.file("longer.png");
+    { std::ofstream old(longer, std::ios::binary); old << std::string(expected.size() + 1000, 'x'); }
+    io::detail::write_png(longer, longer, pixels, settings);
+    CHECK(contents(longer) == expected);
+    io::detail::write_png(folder.file("new.png"), "new.png", pixels, settings);  // created when missing
+    CHECK(contents(folder.file("new.png")) == expected);
 }
 
 TEST_CASE("EXR keeps linear unclamped floats") {
