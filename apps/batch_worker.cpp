@@ -56,10 +56,12 @@ struct LoadedJob {
     std::string error;
 };
 
-/// One image to write, or (image empty) the end of job `position`.
+/// One image to write (`image`, or `bytes` for an 8-bit PNG), or (neither)
+/// the end of job `position`.
 struct WriteItem {
     std::size_t position = 0;
     std::optional<Image> image;
+    std::optional<io::Rgb8Image> bytes;
     std::string path;
     /// The view's dataset files (BatchJob::dataset_files), written before the image.
     io::DatasetFiles dataset_files;
@@ -70,13 +72,36 @@ struct WriteItem {
     double render_seconds = 0.0;  ///< end of job: its views' render time
     /// End of job: the job's own files (path, text), written once every view's files are.
     std::vector<std::pair<std::string, std::string>> job_files;
+
+    bool is_image() const { return image.has_value() || bytes.has_value(); }
 };
 
 /// Image memory the writer has finished with, for the lanes' next copies:
-/// a 256x256 frame is 786 KB of floats, and a fresh allocation of that size
-/// comes back from the kernel as fresh pages (a page fault each) every image.
+/// a 256x256 frame is 786 KB of floats (196 KB as 8-bit values), and a
+/// fresh allocation of that size comes back from the kernel as fresh pages
+/// (a page fault each) every image.
 class SpareImages {
 public:
+    /// `result` converted to an 8-bit PNG's values (io::convert_to_8_bit) in kept memory when there is some.
+    io::Rgb8Image bytes_of(const Image& result) {
+        io::Rgb8Image bytes;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (!spare_bytes_.empty()) {
+                bytes = std::move(spare_bytes_.back());
+                spare_bytes_.pop_back();
+            }
+        }
+        io::convert_to_8_bit(result, bytes);
+        return bytes;
+    }
+
+    void give_back(io::Rgb8Image&& bytes) {
+        if (bytes.values.capacity() > 3 * kPixelsMax) return;
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (spare_bytes_.size() < kKept) spare_bytes_.push_back(std::move(bytes));
+    }
+
     /// `result` copied into kept memory when there is some.
     Image copy_of(const Image& result) {
         Image image;
@@ -106,6 +131,7 @@ private:
     static constexpr std::size_t kPixelsMax = std::size_t{512} * 512;
     std::mutex mutex_;
     std::vector<Image> spare_;
+    std::vector<io::Rgb8Image> spare_bytes_;
 };
 
 /// Images on their way from the render lanes to the writer, which takes them
@@ -136,7 +162,7 @@ public:
         });
         WriteItem item = std::move(*found);
         items_.erase(found);
-        if (!item.image) ++current_;
+        if (!item.is_image()) ++current_;
         changed_.notify_all();
         return item;
     }
@@ -276,9 +302,13 @@ void write_images(std::size_t count, OrderedWrites& pending, Reporter& reporter,
     std::string error;  // of the job being written
     for (std::size_t finished = 0; finished < count;) {
         WriteItem item = pending.pop();
-        if (item.image) {
+        if (item.is_image()) {
+            const auto give_back = [&] {
+                if (item.image) spares.give_back(std::move(*item.image));
+                if (item.bytes) spares.give_back(std::move(*item.bytes));
+            };
             if (!error.empty()) {  // the job already failed: its other views are moot
-                spares.give_back(std::move(*item.image));
+                give_back();
                 continue;
             }
             try {
@@ -289,11 +319,15 @@ void write_images(std::size_t count, OrderedWrites& pending, Reporter& reporter,
                     io::write_dataset_files(item.planes, item.object_first_triangles, item.path, item.dataset_files,
                                             item.dataset_options);
                 }
-                io::write_image(*item.image, item.path, image_options);
+                if (item.bytes) {
+                    io::write_png_8_bit(*item.bytes, item.path, image_options.png_compression);
+                } else {
+                    io::write_image(*item.image, item.path, image_options);
+                }
             } catch (const std::exception& failure) {
                 error = failure.what();
             }
-            spares.give_back(std::move(*item.image));
+            give_back();
             continue;
         }
         if (error.empty()) error = item.error;
@@ -353,12 +387,23 @@ struct LaneRenderers {
     Renderer lane;
 };
 
+/// Whether `path` is written as an 8-bit PNG (then the lane hands the writer
+/// io::convert_to_8_bit's bytes, not the float image).
+bool written_as_8_bit_png(const std::string& path, const io::ImageWriteOptions& options) {
+    if (options.png_bit_depth != 8) return false;
+    try {
+        return io::image_format_for(path) == io::ImageFormat::png;
+    } catch (const std::exception&) {
+        return false;  // the writer's write_image reports it
+    }
+}
+
 /// Renders every view of one loaded job and queues its images, then its end.
 /// `lanes`: how many render lanes the worker runs (more than one: a small
 /// job renders on one thread, RenderGate).
 void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& job, LoadedJob& loaded,
                 const std::string& output_folder, OrderedWrites& pending, RenderGate& gate, int lanes,
-                SpareImages& spares) {
+                SpareImages& spares, const io::ImageWriteOptions& image_options) {
     WriteItem end;
     end.position = position;
     end.error = loaded.error;
@@ -378,6 +423,8 @@ void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& 
                 scenes.prepared.scene.camera = scenes.cameras[view];
                 scenes.prepared.scene.lights = scenes.lights[view];
                 WriteItem image;
+                image.path = (fs::path(output_folder) / job.outputs[view]).string();
+                const bool as_bytes = written_as_8_bit_png(image.path, image_options);
                 {
                     gate.enter(position, alone);
                     struct Leave {
@@ -387,11 +434,17 @@ void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& 
                     renderer.set_options(scenes.prepared.options);  // inside: the alone renderer is shared
                     const RenderResult& result = renderer.render(scenes.prepared.scene);
                     end.render_seconds += result.stats.seconds;
-                    image.image = spares.copy_of(result.image);
+                    // The renderer's image is overwritten by its next frame: converted
+                    // (or copied) now. Converted here, the writer thread gets a quarter
+                    // of the bytes, and nobody copies the floats.
+                    if (as_bytes) {
+                        image.bytes = spares.bytes_of(result.image);
+                    } else {
+                        image.image = spares.copy_of(result.image);
+                    }
                     if (job.dataset_files.any()) image.planes = result.aovs;
                 }
                 image.position = position;
-                image.path = (fs::path(output_folder) / job.outputs[view]).string();
                 if (job.dataset_files.any()) {
                     image.dataset_files = job.dataset_files;
                     image.dataset_options = job.dataset_options;
@@ -450,7 +503,8 @@ void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, con
                 reporter.send({{"start", position}});
                 job = loaded.pop();
             }
-            render_job(renderers, position, *jobs[position], job, output_folder, pending, gate, lanes, spares);
+            render_job(renderers, position, *jobs[position], job, output_folder, pending, gate, lanes, spares,
+                       image_options);
         }
     };
     std::vector<std::thread> more_lanes;
