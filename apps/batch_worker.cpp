@@ -12,6 +12,9 @@
 #include <set>
 #include <thread>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <nlohmann/json.hpp>
 #include <sched.h>
 #include <unistd.h>
@@ -460,6 +463,23 @@ void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& 
     pending.push(std::move(end));
 }
 
+/// Lets glibc's malloc keep the memory the worker frees rather than hand it
+/// back to the kernel: by default each thread's heap gives back its free top
+/// past 128 KiB, and blocks past 128 KiB (until the threshold adapts) are
+/// mapped and unmapped on their own, so memory freed by one mesh's parse
+/// came back as fresh pages (a page fault each, about 5 us on this project's
+/// virtual machine) for the next. Up to 64 MiB free per heap is kept and
+/// blocks up to 32 MiB come from the heaps: on the 1,000-thumbnail
+/// benchmark (100 meshes parsed) 24,800 page faults instead of 33,500 and a
+/// quarter less CPU in the loader threads, the largest process no larger
+/// (111 MB). The worker process only; the pictures do not change.
+void keep_freed_memory() {
+#if defined(__GLIBC__)
+    ::mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    ::mallopt(M_TRIM_THRESHOLD, 64 << 20);
+#endif
+}
+
 /// Render lanes for `threads` (0: every core this process may run on, up to 4).
 int lane_count(int threads) {
     if (threads != 0) return 1;
@@ -474,6 +494,7 @@ int lane_count(int threads) {
 void run_worker(const std::vector<const BatchJob*>& jobs, std::size_t first, const std::string& output_folder,
                 int threads, const io::ImageWriteOptions& image_options, int report_fd, bool one_lane) {
     Reporter reporter(report_fd);
+    keep_freed_memory();
     const int lanes = one_lane ? 1 : lane_count(threads);
     // One loader per lane, up to 2 (one with a single lane, as before the lanes).
     const std::size_t loaders = lanes > 1 ? 2 : 1;
