@@ -470,8 +470,8 @@ void render_job(LaneRenderers& renderers, std::size_t position, const BatchJob& 
 /// came back as fresh pages (a page fault each, about 5 us on this project's
 /// virtual machine) for the next. Up to 64 MiB free per heap is kept and
 /// blocks up to 32 MiB come from the heaps: on the 1,000-thumbnail
-/// benchmark (100 meshes parsed) 24,800 page faults instead of 33,500 and a
-/// quarter less CPU in the loader threads, the largest process no larger
+/// benchmark (100 meshes parsed) 24,800 page faults instead of 33,500 and
+/// 15-24% less CPU in the loader threads, the largest process no larger
 /// (111 MB). The worker process only; the pictures do not change.
 void keep_freed_memory() {
 #if defined(__GLIBC__)
