@@ -214,6 +214,7 @@ std::shared_ptr<JobScenes> JobScenesMemo::load(const BatchJob& job, int threads)
         return std::make_shared<JobScenes>(load_job(job, threads, &meshes_));  // fails with load_job's own message
     }
     const std::string key = memo_key(job, threads);
+    std::shared_ptr<JobScenes> kept;
     {
         std::lock_guard<std::mutex> lock(mutex_);
         for (auto entry = entries_.begin(); entry != entries_.end();) {
@@ -227,32 +228,37 @@ std::shared_ptr<JobScenes> JobScenesMemo::load(const BatchJob& job, int threads)
             } else {
                 entries_.splice(entries_.begin(), entries_, entry);
                 ++reuses_;
-                return lend(entries_.front());
+                entry->lent = true;
+                kept = entry->scenes;
+                break;
             }
         }
     }
+    if (kept) return lend(std::move(kept));
     std::shared_ptr<const io::MeshFile> made_from;
     auto scenes = std::make_shared<JobScenes>(load_job(job, threads, &meshes_, &made_from));
     if (made_from != file) return scenes;  // the file changed meanwhile: not kept
-    Entry fresh{key, file, scenes, {}, false, mesh_file_bytes(*file)};
+    Entry fresh{key, file, scenes, {}, true, mesh_file_bytes(*file)};  // lent from the start
     fresh.made = {scenes->prepared.scene.camera, scenes->prepared.scene.lights, scenes->prepared.options};
-    std::lock_guard<std::mutex> lock(mutex_);
-    bytes_ += fresh.bytes;
-    entries_.push_front(std::move(fresh));
-    std::shared_ptr<JobScenes> lent = lend(entries_.front());
-    while (bytes_ > budget_ && entries_.size() > 1) {
-        bytes_ -= entries_.back().bytes;
-        entries_.pop_back();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        bytes_ += fresh.bytes;
+        entries_.push_front(std::move(fresh));
+        while (bytes_ > budget_ && entries_.size() > 1) {
+            bytes_ -= entries_.back().bytes;
+            entries_.pop_back();
+        }
     }
-    return lent;
+    return lend(std::move(scenes));
 }
 
-std::shared_ptr<JobScenes> JobScenesMemo::lend(Entry& entry) {
-    entry.lent = true;
+std::shared_ptr<JobScenes> JobScenesMemo::lend(std::shared_ptr<JobScenes> kept) {
     // The pointer handed out owns nothing itself: its deleter gives the
-    // object back, and the entry (or, once it is dropped, `kept`) owns it.
-    return std::shared_ptr<JobScenes>(entry.scenes.get(),
-                                      [this, kept = entry.scenes](JobScenes*) { give_back(kept); });
+    // object back, and the entry (or, once it is dropped, the deleter's
+    // `kept`) owns it. Made outside the lock: should making it throw, the
+    // deleter runs at once, and give_back takes the lock.
+    JobScenes* const scenes = kept.get();
+    return std::shared_ptr<JobScenes>(scenes, [this, kept = std::move(kept)](JobScenes*) { give_back(kept); });
 }
 
 void JobScenesMemo::give_back(const std::shared_ptr<JobScenes>& scenes) {

@@ -90,8 +90,9 @@ private:
         std::size_t bytes = 0;
     };
 
-    /// `entry`'s scenes, lent until the returned pointer's last copy is dropped. Under the lock.
-    std::shared_ptr<JobScenes> lend(Entry& entry);
+    /// An entry's scenes (already marked lent), lent until the returned
+    /// pointer's last copy is dropped. Not under the lock.
+    std::shared_ptr<JobScenes> lend(std::shared_ptr<JobScenes> kept);
     /// A lent object back: its changeable fields put back, free to lend again (unless dropped meanwhile).
     void give_back(const std::shared_ptr<JobScenes>& scenes);
 
