@@ -203,44 +203,74 @@ std::string memo_key(const BatchJob& job, int threads) {
 
 }  // namespace
 
-JobScenes JobScenesMemo::load(const BatchJob& job, int threads) {
-    if (job.kind != JobKind::mesh || !job.cameras.empty()) return load_job(job, threads, &meshes_);
+std::shared_ptr<JobScenes> JobScenesMemo::load(const BatchJob& job, int threads) {
+    if (job.kind != JobKind::mesh || !job.cameras.empty()) {
+        return std::make_shared<JobScenes>(load_job(job, threads, &meshes_));
+    }
     std::shared_ptr<const io::MeshFile> file;
     try {
         file = meshes_.read(job.path);  // the current file (parsed again if it changed)
     } catch (const std::exception&) {
-        return load_job(job, threads, &meshes_);  // fails with load_job's own message
+        return std::make_shared<JobScenes>(load_job(job, threads, &meshes_));  // fails with load_job's own message
     }
     const std::string key = memo_key(job, threads);
+    std::shared_ptr<JobScenes> kept;
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        for (auto entry = entries_.begin(); entry != entries_.end(); ++entry) {
-            if (entry->key != key) continue;
-            if (entry->file == file) {
+        for (auto entry = entries_.begin(); entry != entries_.end();) {
+            if (entry->key != key) {
+                ++entry;
+            } else if (entry->file != file) {  // made from an older file
+                bytes_ -= entry->bytes;
+                entry = entries_.erase(entry);
+            } else if (entry->lent) {
+                ++entry;
+            } else {
                 entries_.splice(entries_.begin(), entries_, entry);
                 ++reuses_;
-                return *entry->scenes;
+                entry->lent = true;
+                kept = entry->scenes;
+                break;
             }
-            bytes_ -= entry->bytes;  // made from an older file
-            entries_.erase(entry);
-            break;
         }
     }
+    if (kept) return lend(std::move(kept));
     std::shared_ptr<const io::MeshFile> made_from;
-    auto scenes = std::make_shared<const JobScenes>(load_job(job, threads, &meshes_, &made_from));
-    if (made_from != file) return *scenes;  // the file changed meanwhile: not kept
-    Entry fresh{key, file, scenes, mesh_file_bytes(*file)};
+    auto scenes = std::make_shared<JobScenes>(load_job(job, threads, &meshes_, &made_from));
+    if (made_from != file) return scenes;  // the file changed meanwhile: not kept
+    Entry fresh{key, file, scenes, {}, true, mesh_file_bytes(*file)};  // lent from the start
+    fresh.made = {scenes->prepared.scene.camera, scenes->prepared.scene.lights, scenes->prepared.options};
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        bytes_ += fresh.bytes;
+        entries_.push_front(std::move(fresh));
+        while (bytes_ > budget_ && entries_.size() > 1) {
+            bytes_ -= entries_.back().bytes;
+            entries_.pop_back();
+        }
+    }
+    return lend(std::move(scenes));
+}
+
+std::shared_ptr<JobScenes> JobScenesMemo::lend(std::shared_ptr<JobScenes> kept) {
+    // The pointer handed out owns nothing itself: its deleter gives the
+    // object back, and the entry (or, once it is dropped, the deleter's
+    // `kept`) owns it. Made outside the lock: should making it throw, the
+    // deleter runs at once, and give_back takes the lock.
+    JobScenes* const scenes = kept.get();
+    return std::shared_ptr<JobScenes>(scenes, [this, kept = std::move(kept)](JobScenes*) { give_back(kept); });
+}
+
+void JobScenesMemo::give_back(const std::shared_ptr<JobScenes>& scenes) {
     std::lock_guard<std::mutex> lock(mutex_);
-    for (const Entry& entry : entries_) {
-        if (entry.key == key) return *scenes;  // another loader kept it meanwhile
+    for (Entry& entry : entries_) {
+        if (entry.scenes != scenes) continue;
+        scenes->prepared.scene.camera = entry.made.camera;
+        scenes->prepared.scene.lights = entry.made.lights;
+        scenes->prepared.options = entry.made.options;
+        entry.lent = false;
+        return;
     }
-    bytes_ += fresh.bytes;
-    entries_.push_front(std::move(fresh));
-    while (bytes_ > budget_ && entries_.size() > 1) {
-        bytes_ -= entries_.back().bytes;
-        entries_.pop_back();
-    }
-    return *scenes;
 }
 
 std::size_t JobScenesMemo::reuses() const {

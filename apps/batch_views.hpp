@@ -41,13 +41,27 @@ JobScenes load_job(const BatchJob& job, int threads, MeshFileCache* meshes = nul
 /// shader, lighting, size, samples, options, layout, views and elevations,
 /// threads) and whose mesh file is still the one that job's scenes were made
 /// from (the same parsed file in `meshes`: its file, MTL and textures
-/// unchanged) gets a copy of those scenes, without preparing, framing and
+/// unchanged) gets those scenes again, without preparing, framing and
 /// checking the scene again (a few tenths of a millisecond per job for a
 /// 12k-triangle mesh, most of the loader's time once every mesh is parsed).
-/// load_job() is a function of those inputs and the file alone, so the copy
-/// is what it would return. Kept scenes are bounded by memory (their meshes,
-/// estimated as mesh_file_bytes()), least recently used dropped first.
-/// Thread-safe (several loaders); the scenes are made outside the lock.
+/// load_job() is a function of those inputs and the file alone, so they are
+/// what it would return.
+///
+/// The kept scenes are lent, not copied (a copy of a 12k-triangle mesh,
+/// 0.4 MB of fresh memory, cost about as much as the job's PNG's write):
+/// load() returns the kept object itself while no other job holds it, and
+/// takes it back when the returned pointer's last copy is dropped. The
+/// holder may change `prepared.scene.camera`, `prepared.scene.lights` and
+/// `prepared.options` (a render lane sets each view's camera and lights
+/// and its thread count), which are put back as load_job() made them when
+/// it is returned; nothing else. A job asking for scenes that are all lent
+/// (two jobs of one mesh in flight at once) gets them made by load_job()
+/// again, and they are kept beside the others for the next such job.
+/// Kept scenes are bounded by memory (their meshes, estimated as
+/// mesh_file_bytes()), least recently used dropped first; dropped lent
+/// ones are freed when they are returned.
+/// Thread-safe (several loaders, lanes returning); scenes are made outside
+/// the lock. Every returned pointer must be dropped before the memo is.
 class JobScenesMemo {
 public:
     static constexpr std::size_t kDefaultBudgetBytes = std::size_t{64} << 20;
@@ -55,18 +69,32 @@ public:
     explicit JobScenesMemo(MeshFileCache& meshes, std::size_t budget_bytes = kDefaultBudgetBytes)
         : meshes_(meshes), budget_(budget_bytes) {}
 
-    JobScenes load(const BatchJob& job, int threads);
+    std::shared_ptr<JobScenes> load(const BatchJob& job, int threads);
 
-    std::size_t reuses() const;  ///< loads answered with a kept job's scenes
-    std::size_t kept() const;    ///< scenes kept now
+    std::size_t reuses() const;  ///< loads answered with kept scenes
+    std::size_t kept() const;    ///< scenes kept now (several of one job when they were lent at once)
 
 private:
+    /// What a holder may change, as load_job() made it.
+    struct Changeable {
+        Camera camera;
+        std::vector<PointLight> lights;
+        RenderOptions options;
+    };
     struct Entry {
         std::string key;
         std::shared_ptr<const io::MeshFile> file;
-        std::shared_ptr<const JobScenes> scenes;
+        std::shared_ptr<JobScenes> scenes;
+        Changeable made;
+        bool lent = false;
         std::size_t bytes = 0;
     };
+
+    /// An entry's scenes (already marked lent), lent until the returned
+    /// pointer's last copy is dropped. Not under the lock.
+    std::shared_ptr<JobScenes> lend(std::shared_ptr<JobScenes> kept);
+    /// A lent object back: its changeable fields put back, free to lend again (unless dropped meanwhile).
+    void give_back(const std::shared_ptr<JobScenes>& scenes);
 
     MeshFileCache& meshes_;
     std::size_t budget_;

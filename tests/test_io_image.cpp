@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 
 #include "io/png_bytes.hpp"
+#include "io/png_encoder.hpp"
 #include "io_test_files.hpp"
 #include "phongrast/camera.hpp"
 #include "phongrast/io/auto_scene.hpp"
@@ -121,6 +122,62 @@ TEST_CASE("files are written with a new file's permissions (0666 less the umask)
         CHECK((status.st_mode & 0777) == 0640);
     }
     CHECK(folder.entry_count() == 3);
+}
+
+TEST_CASE("the PNG writer's file holds exactly the encoded PNG, into a new empty file or over longer contents") {
+    // It opens its file without O_TRUNC (ext4 would write a file truncated to
+    // zero out on close); a file that is not empty is still truncated first.
+    TemporaryFolder folder;
+    const std::vector<std::uint8_t> rgb = {0, 128, 255, 10, 20, 30, 200, 100, 50, 1, 2, 3};
+    io::detail::PngPixels pixels;
+    pixels.data = rgb.data();
+    pixels.rows = 2;
+    pixels.columns = 2;
+    const io::detail::PngSettings settings = io::detail::png_settings(io::PngCompression::standard);
+    const std::string expected = io::detail::encode_png(pixels, settings);
+    const std::string fresh = folder.file("fresh.png");
+    { std::ofstream create(fresh, std::ios::binary); }
+    io::detail::write_png(fresh, fresh, pixels, settings);
+    CHECK(contents(fresh) == expected);
+    const std::string longer = folder.file("longer.png");
+    { std::ofstream old(longer, std::ios::binary); old << std::string(expected.size() + 1000, 'x'); }
+    io::detail::write_png(longer, longer, pixels, settings);
+    CHECK(contents(longer) == expected);
+    io::detail::write_png(folder.file("new.png"), "new.png", pixels, settings);  // created when missing
+    CHECK(contents(folder.file("new.png")) == expected);
+}
+
+TEST_CASE("an image converted to 8-bit values and written as PNG is write_image's file, byte for byte") {
+    TemporaryFolder folder;
+    Image image(37, 53);  // odd sizes: the conversion's four-at-a-time steps end mid-pixel
+    for (int r = 0; r < image.rows; ++r) {
+        for (int c = 0; c < image.columns; ++c) {
+            // Out of range, halfway values and plain ones.
+            image.at(r, c) = {static_cast<float>(r * c) / 900.0f - 0.5f, (r + 0.5f) / 37.0f, 127.5f / 255.0f};
+        }
+    }
+    io::Rgb8Image bytes;
+    bytes.values.assign(10, 7);  // memory reused: what was in it does not matter
+    io::convert_to_8_bit(image, bytes);
+    REQUIRE(bytes.rows == 37);
+    REQUIRE(bytes.columns == 53);
+    REQUIRE(bytes.values.size() == 37u * 53u * 3u);
+    CHECK(bytes.values[3 * 53 + 1] == io::detail::to_8_bit(image.at(1, 0).y));
+    for (const io::PngCompression compression :
+         {io::PngCompression::fast, io::PngCompression::standard, io::PngCompression::small}) {
+        io::ImageWriteOptions options;
+        options.png_compression = compression;
+        io::write_image(image, folder.file("floats.png"), options);
+        io::write_png_8_bit(bytes, folder.file("bytes.png"), compression);
+        CHECK(contents(folder.file("bytes.png")) == contents(folder.file("floats.png")));
+    }
+    CHECK(folder.entry_count() == 2);  // no temporary file left
+    CHECK_THROWS_AS(io::write_png_8_bit(bytes, folder.file("bytes.exr")), io::FileError);
+    CHECK_THROWS_AS(io::write_png_8_bit(io::Rgb8Image{}, folder.file("empty.png")), io::FileError);
+    io::Rgb8Image short_of_values = bytes;
+    short_of_values.values.pop_back();
+    CHECK_THROWS_AS(io::write_png_8_bit(short_of_values, folder.file("short.png")), std::invalid_argument);
+    CHECK(folder.entry_count() == 2);
 }
 
 TEST_CASE("EXR keeps linear unclamped floats") {

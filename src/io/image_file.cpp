@@ -181,6 +181,35 @@ void write_image(const Image& image, const std::string& path, const ImageWriteOp
     });
 }
 
+void convert_to_8_bit(const Image& image, Rgb8Image& out) {
+    validate_image(image);
+    out.rows = image.rows;
+    out.columns = image.columns;
+    out.values.resize(image.pixels.size() * 3);
+    if (!out.values.empty()) detail::to_8_bit(rgb_values(image), out.values.data(), out.values.size());
+}
+
+void write_png_8_bit(const Rgb8Image& image, const std::string& path, PngCompression compression) {
+    // What write_image checks of its image, and its format.
+    if (image.rows < 1 || image.columns < 1) throw FileError(path + ": cannot write an empty image");
+    if (image.values.size() != static_cast<std::size_t>(image.rows) * static_cast<std::size_t>(image.columns) * 3) {
+        throw std::invalid_argument(path + ": the 8-bit image holds " + std::to_string(image.values.size()) +
+                                    " values; expected rows x columns x 3");
+    }
+    if (image_format_for(path) != ImageFormat::png) {
+        throw FileError(path + ": an 8-bit RGB image is written as PNG; expected a file name ending in .png");
+    }
+    detail::PngPixels pixels;
+    pixels.columns = image.columns;
+    pixels.rows = image.rows;
+    pixels.channels = 3;
+    pixels.bit_depth = 8;
+    pixels.data = image.values.data();
+    replace_file_atomically(path, [&](const std::string& temporary) {
+        detail::write_png(temporary, path, pixels, detail::png_settings(compression));
+    });
+}
+
 Image read_image(const std::string& path) {
     bool exr = false;
     {

@@ -16,6 +16,7 @@
 
 #include <fcntl.h>
 #include <libdeflate.h>
+#include <sys/stat.h>
 #include <sys/uio.h>
 #include <unistd.h>
 
@@ -246,8 +247,20 @@ void write_png(const std::string& file, const std::string& path, const PngPixels
         parts.push_back({compressed->data() + at, std::min(kLargestChunk, compressed_size - at)});
         parts.push_back({frames[frame].data(), frames[frame].size()});
     }
-    const int out = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    // Not O_TRUNC: on ext4, truncating a file to size 0 marks it to have its
+    // data written out when it is closed (auto_da_alloc, meant for programs
+    // that rewrite a file in place without fsync), so every image's close()
+    // started its disk write on the spot (a batch writes images one after
+    // another). The file is replace_file_atomically()'s new, empty temporary;
+    // one that is not empty is truncated all the same.
+    const int out = ::open(file.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
     if (out < 0) throw FileError(path + ": cannot write: " + std::strerror(errno));
+    struct stat status {};
+    if (::fstat(out, &status) != 0 || (status.st_size != 0 && ::ftruncate(out, 0) != 0)) {
+        const int error = errno;
+        ::close(out);
+        throw FileError(path + ": cannot write: " + std::strerror(error));
+    }
     bool written = true;
     for (std::size_t first = 0; written && first < parts.size();) {
         const int count = static_cast<int>(std::min<std::size_t>(parts.size() - first, IOV_MAX));

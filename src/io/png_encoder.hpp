@@ -37,8 +37,9 @@ PngSettings png_settings(PngCompression compression);
 /// Throws std::invalid_argument for sizes or depths PNG cannot hold.
 std::string encode_png(const PngPixels& pixels, PngSettings settings);
 
-/// Encodes and writes the PNG to `file` (a temporary file; `path` names the
-/// destination in errors). Throws FileError.
+/// Encodes and writes the PNG to `file` (a temporary file, normally new and
+/// empty: replace_file_atomically()'s; `path` names the destination in
+/// errors). Throws FileError.
 void write_png(const std::string& file, const std::string& path, const PngPixels& pixels, PngSettings settings);
 
 /// [0,1] clamp then round to 16 bits, no gamma curve; NaN (never expected) becomes 0.

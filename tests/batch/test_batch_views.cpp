@@ -333,7 +333,7 @@ TEST_CASE("loaders reading at once parse each mesh once, and get the same parsed
     CHECK(got[1]->mesh.positions.size() == 3003);
 }
 
-TEST_CASE("a mesh job asking what an earlier one asked gets a copy of its scenes, made again when the mesh changes") {
+TEST_CASE("a mesh job asking what an earlier one asked gets its scenes again, made again when the mesh changes") {
     TemporaryFolder folder;
     folder.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.5\nf 1 2 3\nf 2 4 3\n");
     folder.write("b.obj", "v 0 0 0\nv 2 0 0\nv 0 2 0\nf 1 2 3\n");
@@ -357,18 +357,18 @@ TEST_CASE("a mesh job asking what an earlier one asked gets a copy of its scenes
     };
     for (std::size_t j = 0; j < manifest.jobs.size(); ++j) {
         INFO("job " << j);
-        const JobScenes remembered = memo.load(manifest.jobs[j], 0);
+        const JobScenes remembered = *memo.load(manifest.jobs[j], 0);
         MeshFileCache fresh;
         CHECK(same(remembered, load_job(manifest.jobs[j], 0, &fresh)));  // what a fresh load makes
     }
     CHECK(memo.reuses() == 1);  // only line 3 asks what line 1 asked
     CHECK(memo.kept() == 5);
-    CHECK(memo.load(manifest.jobs[1], 0).prepared.scene.mesh.positions.size() == 3);
+    CHECK(memo.load(manifest.jobs[1], 0)->prepared.scene.mesh.positions.size() == 3);
     CHECK(memo.reuses() == 2);
 
     // An edited mesh: made again, from the new file, and kept instead of the old.
     folder.write("b.obj", "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 2 2 1\nf 1 2 3\nf 2 4 3\n");
-    const JobScenes edited = memo.load(manifest.jobs[1], 0);
+    const JobScenes edited = *memo.load(manifest.jobs[1], 0);
     CHECK(edited.prepared.scene.mesh.positions.size() == 4);
     MeshFileCache fresh;
     CHECK(same(edited, load_job(manifest.jobs[1], 0, &fresh)));
@@ -379,4 +379,72 @@ TEST_CASE("a mesh job asking what an earlier one asked gets a copy of its scenes
     CHECK_THROWS_AS(memo.load(manifest.jobs[1], 0), phongrast::io::FileError);
     CHECK_THROWS_AS(load_job(manifest.jobs[1], 0), phongrast::io::FileError);
     CHECK(memo.reuses() == 2);
+}
+
+TEST_CASE("kept scenes are lent: given back as made, made again while lent, valid when dropped while lent") {
+    TemporaryFolder folder;
+    folder.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.5\nf 1 2 3\nf 2 4 3\n");
+    const Manifest manifest =
+        parse_manifest("{\"mesh\": \"a.obj\", \"size\": \"40x30\", \"views\": 2, \"output\": \"a1-{view}.png\"}\n"
+                       "{\"mesh\": \"a.obj\", \"size\": \"40x30\", \"views\": 2, \"output\": \"a2-{view}.png\"}\n",
+                       "jobs.jsonl", folder.file(""), JobSettings{});
+    MeshFileCache meshes;
+    MeshFileCache fresh_meshes;
+    const JobScenes fresh = load_job(manifest.jobs[0], 0, &fresh_meshes);
+    // Everything a holder may change, and the mesh it may not.
+    const auto as_made = [&](const JobScenes& scenes) {
+        const Scene& scene = scenes.prepared.scene;
+        const Scene& made = fresh.prepared.scene;
+        bool lights = scene.lights.size() == made.lights.size();
+        for (std::size_t i = 0; lights && i < scene.lights.size(); ++i) {
+            lights = scene.lights[i].position == made.lights[i].position && scene.lights[i].intensity == made.lights[i].intensity;
+        }
+        return scene.camera.eye == made.camera.eye && scene.camera.lookat == made.camera.lookat &&
+               scene.camera.up == made.camera.up && scene.camera.sensor_height == made.camera.sensor_height && lights &&
+               scenes.prepared.options.threads == fresh.prepared.options.threads &&
+               scenes.prepared.options.aovs.any() == fresh.prepared.options.aovs.any() &&
+               scene.mesh.positions == made.mesh.positions && scene.mesh.normals == made.mesh.normals &&
+               scenes.cameras.size() == fresh.cameras.size();
+    };
+    JobScenesMemo memo(meshes);
+    const JobScenes* first = nullptr;
+    {
+        const std::shared_ptr<JobScenes> held = memo.load(manifest.jobs[0], 0);
+        first = held.get();
+        REQUIRE(as_made(*held));
+        // Held: the other job asking the same gets scenes of its own, made again, as made.
+        const std::shared_ptr<JobScenes> other = memo.load(manifest.jobs[1], 0);
+        CHECK(other.get() != held.get());
+        CHECK(as_made(*other));
+        CHECK(memo.reuses() == 0);
+        CHECK(memo.kept() == 2);
+        // What a render lane changes.
+        held->prepared.scene.camera = held->cameras[1];
+        held->prepared.scene.lights = held->lights[1];
+        held->prepared.scene.lights.push_back(PointLight{});
+        held->prepared.options.threads = 1;
+        held->prepared.options.aovs = AovRequest::all();
+        CHECK_FALSE(as_made(*held));
+    }
+    // Given back as made, and lent again (the same object, no copy).
+    const std::shared_ptr<JobScenes> again = memo.load(manifest.jobs[1], 0);
+    CHECK(memo.reuses() == 1);
+    CHECK(as_made(*again));
+    const bool same_object = again.get() == first;
+    const std::shared_ptr<JobScenes> second = memo.load(manifest.jobs[0], 0);  // the other kept one
+    CHECK(memo.reuses() == 2);
+    CHECK((same_object || second.get() == first));
+    CHECK(as_made(*second));
+
+    // Dropped from the memo while lent (the budget is too small for two): the
+    // holder's scenes stay valid, and are not kept again when given back.
+    JobScenesMemo small(meshes, 1);
+    std::shared_ptr<JobScenes> kept_one = small.load(manifest.jobs[0], 0);
+    const std::shared_ptr<JobScenes> made_again = small.load(manifest.jobs[1], 0);  // lent: made again, the other dropped
+    CHECK(small.kept() == 1);
+    kept_one->prepared.scene.camera = kept_one->cameras[1];
+    CHECK(kept_one->prepared.scene.mesh.positions == fresh.prepared.scene.mesh.positions);
+    kept_one.reset();
+    CHECK(small.kept() == 1);
+    CHECK(as_made(*made_again));
 }

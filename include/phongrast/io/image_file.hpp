@@ -9,6 +9,7 @@
 #ifndef PHONGRAST_IO_IMAGE_FILE_HPP
 #define PHONGRAST_IO_IMAGE_FILE_HPP
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,6 +45,25 @@ struct ImageWriteOptions {
 /// Throws FileError.
 void write_image(const Image& image, const std::string& path);
 void write_image(const Image& image, const std::string& path, const ImageWriteOptions& options);
+
+/// An image as an 8-bit PNG stores it: r, g, b bytes per pixel, rows top to
+/// bottom, each the float value clamped to [0,1] and rounded (no gamma curve).
+struct Rgb8Image {
+    int rows = 0;
+    int columns = 0;
+    std::vector<std::uint8_t> values;  ///< rows x columns x 3
+};
+
+/// `image`'s values as write_image stores them in an 8-bit PNG, into `out`
+/// (whose memory is reused). A batch converts in its render lanes and hands
+/// the writer thread a quarter of the bytes of the float image.
+void convert_to_8_bit(const Image& image, Rgb8Image& out);
+
+/// Writes `image` as an 8-bit RGB PNG, as write_image writes the float image
+/// it was converted from (the same file, byte for byte), atomically. `path`
+/// must name a .png file. Throws FileError.
+void write_png_8_bit(const Rgb8Image& image, const std::string& path,
+                     PngCompression compression = PngCompression::standard);
 
 /// Reads an image into float RGB: an 8-bit value k becomes k/255 and a 16-bit
 /// one k/65535 (correctly rounded to float), float as stored; grey gives equal
