@@ -504,9 +504,47 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
     }
 }
 
+template <typename Real>
+std::uint64_t set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, DrawList<Real>& draws,
+                              RenderStats& stats, ProgressMonitor& progress) {
+    const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
+    const std::size_t chunks = (triangles.size() + kSetupChunk - 1) / kSetupChunk;
+    const FrameVector<ScreenVertex>& screen = input.vertices.screen;
+    ChunkVector<FillTriangle<Real>>& out = draws.direct_draws;
+    out.clear();
+    out.reserve(8);  // a clipped triangle's fan has at most 6 pieces: no allocation per triangle
+    ClipVertexStore<Real>& clip_vertices = draws.direct_clip_vertices;
+    SetupCounts counts;
+    TriangleSetup<Real> setup(input, out, clip_vertices, counts, draws.direct_vectors);
+    FillTarget<Real>& target = *fill.target;
+    progress.begin_stage(0.1, 1.0, chunks);
+    for (std::size_t chunk = 0; chunk < chunks && !progress.cancelled(); ++chunk) {
+        const std::size_t end = std::min(triangles.size(), (chunk + 1) * kSetupChunk);
+        for (std::size_t t = chunk * kSetupChunk; t < end; ++t) {
+            out.clear();
+            clip_vertices.clear();  // the draws pointing there are filled before the next triangle
+            setup.run(static_cast<std::uint32_t>(t));
+            if (out.empty()) continue;
+            if (fill.ranked) {
+                target.key = painter_key(triangles[t], screen);
+                target.tie = fill.original_triangle != nullptr ? fill.original_triangle[t] : static_cast<std::uint32_t>(t);
+            }
+            for (const FillTriangle<Real>& draw : out) fill.kernel(draw, target, *fill.vectors, *fill.constants);
+        }
+        progress.piece_done();
+    }
+    progress.throw_if_cancelled();
+    add_counts(counts, stats);
+    count_term_evaluations(input.scene, input.options, input.shader.effects, counts.lit_points,
+                           LitPoints::outside_the_fill, stats);
+    return counts.drawn;
+}
+
 #define PHONGRAST_INSTANTIATE_SETUP(Real)                                                                       \
     template void set_up_triangles<Real>(const SetupInput<Real>&, DrawList<Real>&, RenderStats&,                \
                                          ProgressMonitor&);                                                     \
+    template std::uint64_t set_up_and_fill<Real>(const SetupInput<Real>&, const DirectFill<Real>&, DrawList<Real>&, \
+                                                 RenderStats&, ProgressMonitor&);                               \
     template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, ChunkVector<FillTriangle<Real>>&, \
                                         ClipVertexStore<Real>&, SetupCounts&, LightVectorsAt<Real>&);
 PHONGRAST_INSTANTIATE_SETUP(float)
