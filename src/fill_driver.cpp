@@ -245,9 +245,13 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
         // Key 0 is no triangle's (farthest_first_key() gives it to a NaN
         // only): "no colour yet", so the ties need no clearing.
         assign_populated(memory.rank_keys, samples, std::uint64_t(0));
-        if (memory.rank_ties.size() < samples) memory.rank_ties.resize(samples);
         target.rank_keys = memory.rank_keys.data();
-        target.rank_ties = memory.rank_ties.data();
+        // The walk takes the triangles in mesh order, i.e. in the order of
+        // their ties, unless the mesh is a reordered copy (mesh_order.hpp).
+        if (original_triangle != nullptr) {
+            if (memory.rank_ties.size() < samples) memory.rank_ties.resize(samples);
+            target.rank_ties = memory.rank_ties.data();
+        }
     }
     DirectFill<Real> fill;
     fill.kernel = plan.kernel;
@@ -256,6 +260,7 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
     fill.vectors = &memory.direct_vectors;
     fill.original_triangle = original_triangle;
     fill.ranked = ranked;
+    fill.reads_varyings = !plan.constants.uniform_color;
     const std::uint64_t drawn = set_up_and_fill(setup, fill, draws, stats, progress);
     // The rank test puts every drawn triangle in painter's order, as the sort would have.
     if (ranked) stats.triangles_sorted += drawn;

@@ -74,8 +74,10 @@ struct FillTarget {
     /// rank of the triangle whose colour it holds, `rank_keys` its key
     /// (0: none yet, no triangle's key is 0) and `rank_ties` its tie-break;
     /// the draw being filled writes a sample only when its own rank (`key`,
-    /// then `tie`) is higher, i.e. when painter's order draws it later. Null:
-    /// the draws come in painter's order, each writes every sample it shades.
+    /// then `tie`) is higher, i.e. when painter's order draws it later.
+    /// `rank_ties` null: the draws come in the order of their ties (the
+    /// mesh's), so an equal key wins. `rank_keys` null: the draws come in
+    /// painter's order, each writes every sample it shades.
     std::uint64_t* rank_keys = nullptr;
     std::uint32_t* rank_ties = nullptr;
     std::uint64_t key = 0;

@@ -125,6 +125,7 @@ struct DirectFill {
     LightVectorsAt<Real>* vectors = nullptr;
     const std::uint32_t* original_triangle = nullptr;
     bool ranked = true;
+    bool reads_varyings = true;  ///< set-up or the kernel reads the corners' varyings (colours vary)
 };
 
 /// Set-up and fill in one walk of the mesh, on the calling thread: each
