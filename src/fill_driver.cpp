@@ -1,6 +1,7 @@
 #include "fill_driver.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <limits>
 
@@ -223,9 +224,19 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
     }
 }
 
+namespace {
+std::atomic<bool> mesh_order_fill_allowed{true};
+std::atomic<std::uint64_t> mesh_order_fill_passes{0};
+}  // namespace
+
+bool set_fill_in_mesh_order_allowed(bool allowed) { return mesh_order_fill_allowed.exchange(allowed); }
+
+std::uint64_t passes_filled_in_mesh_order() { return mesh_order_fill_passes.load(std::memory_order_relaxed); }
+
 template <typename Real>
 bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs) {
-    return plan.may_fill_in_mesh_order && !extra_outputs && tbb::this_task_arena::max_concurrency() == 1;
+    return plan.may_fill_in_mesh_order && !extra_outputs && tbb::this_task_arena::max_concurrency() == 1 &&
+           mesh_order_fill_allowed.load(std::memory_order_relaxed);
 }
 
 template <typename Real>
@@ -233,6 +244,7 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
                         const SetupInput<Real>& setup, const std::uint32_t* original_triangle, int rows, int columns,
                         DrawList<Real>& draws, FillMemory<Real>& memory, Image& image, RenderStats& stats,
                         ProgressMonitor& progress) {
+    mesh_order_fill_passes.fetch_add(1, std::memory_order_relaxed);
     image.rows = rows;
     image.columns = columns;
     const std::size_t samples = static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns);

@@ -82,6 +82,12 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
 template <typename Real>
 bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs);
 
+/// For tests: whether fills_in_mesh_order() may say yes (it may by default),
+/// so that one thread can render a scene both ways. Returns the previous setting.
+bool set_fill_in_mesh_order_allowed(bool allowed);
+/// For tests: the passes filled in mesh order since the process started.
+std::uint64_t passes_filled_in_mesh_order();
+
 /// One thread, ambient only (fills_in_mesh_order()): set-up and fill in one
 /// walk of the mesh (set_up_and_fill()), painter's order kept by a rank test
 /// per sample instead of a sort, into `image` resized and cleared as
