@@ -20,6 +20,8 @@
 
 #include <CLI/CLI.hpp>
 
+// Internal: detail::set_fill_in_mesh_order_allowed, for --banded-ambient.
+#include "fill_driver.hpp"
 #include "phongrast/render.hpp"
 #include "mesh_orders.hpp"
 #include "support/speed_scenes.hpp"
@@ -40,7 +42,7 @@ struct Settings {
     std::vector<int> threads = {1, 2};
     int rows = 0, repeat = 5;
     double seconds = 2.0;
-    bool header = false, list = false;
+    bool header = false, list = false, banded_ambient = false;
     support::SpeedSceneSelection selection;
 };
 
@@ -84,8 +86,10 @@ PeakMemory peak_memory(phongrast::Scene& scene, int threads) {
 }
 
 /// Medians in ms of Phong full, Phong ambient, Gouraud ambient, flat ambient, in interleaved rounds.
+/// With `banded_ambient`, a fifth: Phong ambient through set-up, sort, bins
+/// and bands (the fill in mesh order forbidden), as every thread count did before it.
 std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast::RenderOptions& options, int repeat,
-                                        double seconds) {
+                                        double seconds, bool banded_ambient = false) {
     struct Case {
         Shader shader;
         Lighting lighting;
@@ -98,13 +102,23 @@ std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast
     // after frame, nothing carried over from another case's frame. Four sets of
     // buffers: about 6 GB for the 8M mesh.
     std::vector<phongrast::Renderer> renderers;
-    for (std::size_t k = 0; k < cases.size(); ++k) renderers.emplace_back(options);
+    for (std::size_t k = 0; k < cases.size() + (banded_ambient ? 1 : 0); ++k) renderers.emplace_back(options);
     std::vector<std::function<double()>> contenders;
     for (std::size_t k = 0; k < cases.size(); ++k) {
         contenders.push_back([&, k] {
             scene.shader = cases[k].shader;  // outside the timed part, no copy of the mesh
             scene.lighting = cases[k].lighting;
             return support::time_ms([&] { renderers[k].render(scene); });
+        });
+    }
+    if (banded_ambient) {
+        contenders.push_back([&] {
+            scene.shader = Shader::phong;
+            scene.lighting = Lighting::only_ambient();
+            const bool allowed = phongrast::detail::set_fill_in_mesh_order_allowed(false);
+            const double ms = support::time_ms([&] { renderers.back().render(scene); });
+            phongrast::detail::set_fill_in_mesh_order_allowed(allowed);
+            return ms;
         });
     }
     return support::interleaved_medians_filling(seconds, repeat, std::max(repeat, kMaxRounds), contenders);
@@ -148,7 +162,13 @@ void run(const Settings& s) {
     if (s.header) print_header(s.repeat, s.seconds, s.mode, restarted);
     for (int threads : s.threads) {
         const PeakMemory peak = peak_memory(scene, threads);
-        const std::vector<double> ms = ambient_and_full_ms(scene, options_for(s.mode, threads), s.repeat, s.seconds);
+        const std::vector<double> ms =
+            ambient_and_full_ms(scene, options_for(s.mode, threads), s.repeat, s.seconds, s.banded_ambient);
+        if (s.banded_ambient) {
+            // On stderr: the table's row (stdout) keeps its columns.
+            std::fprintf(stderr, "%s, %d thread(s): Phong ambient banded %.2f ms, / full %.3f; in mesh order / banded %.3f\n",
+                         named.name.c_str(), threads, ms[4], ms[4] / ms[0], ms[1] / ms[4]);
+        }
         std::printf("| %s | %s | %.0f | %dx%d | %d | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f | %.1f | %.1f | %.1f | %s "
                     "| %.1f | %.1f | %s |\n",
                     named.name.c_str(), scene_class.c_str(), triangles, scene.image.columns,
@@ -175,6 +195,9 @@ int main(int argc, char** argv) {
     app.add_option("--seconds", s.seconds, "more rounds (up to 101) while the timed rounds would take less than this")
         ->check(CLI::Range(0.0, 600.0));
     app.add_flag("--header", s.header, "print the table's title and header first");
+    app.add_flag("--banded-ambient", s.banded_ambient,
+                 "also time Phong ambient with the fill in mesh order forbidden (sorted, binned, by bands), "
+                 "interleaved with the others; its ratios on stderr");
     bool no_assets = false, no_large = false, no_huge = false;
     app.add_flag("--list", s.list, "print the names of the speed scenes (less those of --no-...) and stop");
     app.add_flag("--no-assets", no_assets, "--list: without the meshes of ../shared/assets");

@@ -68,7 +68,7 @@ void time_steps(const phongrast::Scene& scene, phongrast::RenderOptions options,
 
 struct Settings {
     std::string name = "icosphere-9.7k", shader = "phong", mode = "exact", precision = "float";
-    std::string overdraw = "auto", isa = "best", dump;
+    std::string overdraw = "auto", isa = "best", lighting, dump;
     int rows = 0, threads = 1, repeat = 5, warmup = 1;
     bool steps = false;
 };
@@ -137,11 +137,13 @@ int main(int argc, char** argv) {
     app.add_flag("--steps", s.steps,
                  "time every layer + baseline kernels, automatic overdraw + baseline, automatic + AVX2 "
                  "in interleaved rounds in this process; print a Markdown row (medians in ms, ratios to the first)");
+    app.add_option("--lighting", s.lighting, "the scene's lighting instead of its own, as the command names it (ambient, full, ...)");
     app.add_option("--dump", s.dump, "write the last image's raw float RGB pixels here (to compare two builds with cmp)");
     CLI11_PARSE(app, argc, argv);
     try {
         support::NamedScene named = support::speed_scene(s.name, s.rows);
         named.scene.shader = phongrast::parse_shader(s.shader);
+        if (!s.lighting.empty()) named.scene.lighting = phongrast::parse_lighting(s.lighting);
         const phongrast::RenderOptions options = options_for(s);
         if (s.isa != "best") {
             phongrast::detail::override_kernel_isa(s.isa == "avx2" ? phongrast::detail::KernelIsa::avx2

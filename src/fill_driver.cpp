@@ -1,10 +1,12 @@
 #include "fill_driver.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <limits>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "fill_dispatch.hpp"
 #include "prefetch.hpp"
@@ -155,6 +157,11 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     const bool one_color = options.specialize_effects && scene.shader != Shader::gouraud && !effects.diffuse &&
                            !effects.specular && !effects.varying_colors;
     plan.order_free = one_color && !plan.depth_test && !plan.shade_visible_only && textures == nullptr;
+    // Flat, Gouraud and Phong's unlit kernel go through fill_samples(), the
+    // specialised ones only for Phong (the general kernel shades in batches).
+    plan.may_fill_in_mesh_order = !plan.depth_test && !plan.shade_visible_only && textures == nullptr &&
+                                  !effects.diffuse && !effects.specular &&
+                                  (scene.shader != Shader::phong || options.specialize_effects);
     plan.reads_corners = textures != nullptr ||
                          (scene.shader == Shader::phong && (effects.normals || effects.varying_colors));
     return plan;
@@ -217,11 +224,76 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
     }
 }
 
+namespace {
+std::atomic<bool> mesh_order_fill_allowed{true};
+std::atomic<std::uint64_t> mesh_order_fill_passes{0};
+}  // namespace
+
+bool set_fill_in_mesh_order_allowed(bool allowed) { return mesh_order_fill_allowed.exchange(allowed); }
+
+std::uint64_t passes_filled_in_mesh_order() { return mesh_order_fill_passes.load(std::memory_order_relaxed); }
+
+template <typename Real>
+bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs) {
+    return plan.may_fill_in_mesh_order && !extra_outputs && tbb::this_task_arena::max_concurrency() == 1 &&
+           mesh_order_fill_allowed.load(std::memory_order_relaxed);
+}
+
+template <typename Real>
+void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const FillPlan<Real>& plan,
+                        const SetupInput<Real>& setup, const std::uint32_t* original_triangle, int rows, int columns,
+                        DrawList<Real>& draws, FillMemory<Real>& memory, Image& image, RenderStats& stats,
+                        ProgressMonitor& progress) {
+    mesh_order_fill_passes.fetch_add(1, std::memory_order_relaxed);
+    image.rows = rows;
+    image.columns = columns;
+    const std::size_t samples = static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns);
+    const bool mapped = reserve_on_huge_pages(image.pixels, samples);
+    resize_polling(image.pixels, samples, progress.poll_function(), !mapped);
+    fill_pixels(image.pixels.data(), samples, scene.image.background);
+    FillTarget<Real> target{image, memory.depth_buffer, 0, rows, false, 0, 0};
+    const bool ranked = !plan.order_free;
+    if (ranked) {
+        // Key 0 is no triangle's (farthest_first_key() gives it to a NaN
+        // only): "no colour yet", so the ties need no clearing.
+        assign_populated(memory.rank_keys, samples, std::uint64_t(0));
+        target.rank_keys = memory.rank_keys.data();
+        // The walk takes the triangles in mesh order, i.e. in the order of
+        // their ties, unless the mesh is a reordered copy (mesh_order.hpp).
+        if (original_triangle != nullptr) {
+            if (memory.rank_ties.size() < samples) memory.rank_ties.resize(samples);
+            target.rank_ties = memory.rank_ties.data();
+        }
+    }
+    DirectFill<Real> fill;
+    fill.kernel = plan.kernel;
+    fill.constants = &plan.constants;
+    fill.target = &target;
+    fill.vectors = &memory.direct_vectors;
+    fill.original_triangle = original_triangle;
+    fill.ranked = ranked;
+    fill.reads_varyings = !plan.constants.uniform_color;
+    const std::uint64_t drawn = set_up_and_fill(setup, fill, draws, stats, progress);
+    // The rank test puts every drawn triangle in painter's order, as the sort would have.
+    if (ranked) stats.triangles_sorted += drawn;
+    stats.samples_covered += target.covered;
+    stats.samples_shaded += target.samples;
+    stats.nonfinite_values_replaced += target.replaced;
+    if (scene.shader == Shader::phong) {
+        count_term_evaluations(scene, options, plan.effects, target.samples, LitPoints::phong_samples, stats);
+    }
+}
+
 #define PHONGRAST_INSTANTIATE_FILL_DRIVER(Real)                                                              \
     template FillPlan<Real> plan_fill<Real>(const Scene&, const RenderOptions&, const EffectSet&,                \
                                             const LightRig<Real>&, const KernelTexture*);                    \
     template void fill_bins<Real>(const Scene&, const RenderOptions&, const FillPlan<Real>&, const Bins<Real>&,  \
-                                  int, int, FillMemory<Real>&, Image&, RenderStats&, ProgressMonitor&);
+                                  int, int, FillMemory<Real>&, Image&, RenderStats&, ProgressMonitor&);    \
+    template bool fills_in_mesh_order<Real>(const FillPlan<Real>&, bool);                                     \
+    template void fill_in_mesh_order<Real>(const Scene&, const RenderOptions&, const FillPlan<Real>&,        \
+                                           const SetupInput<Real>&, const std::uint32_t*, int, int,           \
+                                           DrawList<Real>&, FillMemory<Real>&, Image&, RenderStats&,          \
+                                           ProgressMonitor&);
 PHONGRAST_INSTANTIATE_FILL_DRIVER(float)
 PHONGRAST_INSTANTIATE_FILL_DRIVER(double)
 #undef PHONGRAST_INSTANTIATE_FILL_DRIVER

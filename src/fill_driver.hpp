@@ -9,6 +9,7 @@
 
 #include "binning.hpp"
 #include "fill_types.hpp"
+#include "triangle_setup.hpp"
 #include "huge_page_pool.hpp"
 #include "phongrast/image.hpp"
 #include "phongrast/render.hpp"
@@ -30,6 +31,10 @@ struct FillMemory {
     std::vector<std::uint64_t> shaded, replaced, covered;  ///< per band
     std::vector<LightVectorsAt<Real>> band_vectors;
     std::vector<VisibleLayer> band_layers;
+    /// fill_in_mesh_order(): per sample, the painter's rank of its colour (FillTarget::rank_keys).
+    FrameVector<std::uint64_t> rank_keys;
+    FrameVector<std::uint32_t> rank_ties;
+    LightVectorsAt<Real> direct_vectors;
 };
 
 /// How this render fills: the kernel, its constants and the strategy.
@@ -48,6 +53,11 @@ struct FillPlan {
     /// colours or normals, textures' (s, t)): the fill prefetches them.
     bool reads_corners = false;
     EffectSet effects;               ///< what the kernel evaluates (for the term counts)
+    /// The kernel goes through fill_samples() (FillTarget::rank_keys), every
+    /// layer shaded, no depth buffer, no texture, and no term that lights per
+    /// sample or needs a normal (ambient only): fill_in_mesh_order() may
+    /// paint this picture, when nothing else asks for painter's order.
+    bool may_fill_in_mesh_order = false;
 };
 
 /// Chooses the kernel and strategy for the scene, its effects and the options.
@@ -65,6 +75,29 @@ template <typename Real>
 void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<Real>& plan, const Bins<Real>& bins,
                int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats,
                ProgressMonitor& progress);
+
+/// Whether this pass fills in mesh order: the plan allows it, no extra
+/// output names the last triangle, and the render runs on one thread (the
+/// walk is serial; more threads set up, sort, bin and fill bands in parallel).
+template <typename Real>
+bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs);
+
+/// For tests: whether fills_in_mesh_order() may say yes (it may by default),
+/// so that one thread can render a scene both ways. Returns the previous setting.
+bool set_fill_in_mesh_order_allowed(bool allowed);
+/// For tests: the passes filled in mesh order since the process started.
+std::uint64_t passes_filled_in_mesh_order();
+
+/// One thread, ambient only (fills_in_mesh_order()): set-up and fill in one
+/// walk of the mesh (set_up_and_fill()), painter's order kept by a rank test
+/// per sample instead of a sort, into `image` resized and cleared as
+/// fill_bins() does; adds what set-up and fill_bins() add to `stats`, the
+/// same counts. The image is the one painter's fill paints, bit for bit.
+template <typename Real>
+void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const FillPlan<Real>& plan,
+                        const SetupInput<Real>& setup, const std::uint32_t* original_triangle, int rows, int columns,
+                        DrawList<Real>& draws, FillMemory<Real>& memory, Image& image, RenderStats& stats,
+                        ProgressMonitor& progress);
 
 }  // namespace phongrast::detail
 

@@ -243,6 +243,55 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
     }
 }
 
+/// fill_ranked_span()'s loop. `Ties`: the draws' ties must be compared (a
+/// reordered mesh); else the draws come in the order of their ties, so a
+/// draw of equal key always comes after the one whose colour is there.
+template <bool Ties, typename Real, bool Perspective, typename Shade>
+PHONGRAST_FILL_INLINE void fill_ranked_samples(const FillTriangle<Real>& draw, FillTarget<Real>& target,
+                                               std::size_t start, int count, const Real* q, const Real* dq,
+                                               Shade& shade) {
+    std::uint64_t* keys = target.rank_keys + start;
+    std::uint32_t* ties = Ties ? target.rank_ties + start : nullptr;
+    glm::vec3* pixels = target.image.pixels.data() + start;
+    const std::uint64_t key = target.key;
+    const std::uint32_t tie = target.tie;
+    for (int k = 0; k < count; ++k) {
+        Real w[3];
+        sample_weights<Real, Perspective>(draw, q, dq, k, w);
+        const glm::vec3 colour = finite_or_replaced(glm::vec3(shade(w)), target.replaced);
+        if constexpr (Ties) {
+            if (key > keys[k] || (key == keys[k] && tie > ties[k])) {
+                keys[k] = key;
+                ties[k] = tie;
+                pixels[k] = colour;
+            }
+        } else if (key >= keys[k]) {
+            keys[k] = key;
+            pixels[k] = colour;
+        }
+    }
+}
+
+/// One span of fill_samples() when painter's order is a test per sample
+/// (FillTarget::rank_keys): every sample is shaded as painter's fill shades
+/// it (the same weights, counted alike), and written only where this draw's
+/// rank is higher than the rank of the colour the sample holds, so that each
+/// sample ends with the colour of the triangle painter's order draws there
+/// last, whatever order the draws come in. Kept out of line: the painter's
+/// fill does not carry its registers.
+template <typename Real, bool Perspective, typename Shade>
+PHONGRAST_NOINLINE void fill_ranked_span(const FillTriangle<Real>& draw, FillTarget<Real>& target,
+                                         std::size_t row_start, int first_column, int count, const Real* q,
+                                         const Real* dq, Shade& shade) {
+    const std::size_t start = row_start + static_cast<std::size_t>(first_column);
+    if (target.rank_ties != nullptr) {
+        fill_ranked_samples<true, Real, Perspective>(draw, target, start, count, q, dq, shade);
+    } else {
+        fill_ranked_samples<false, Real, Perspective>(draw, target, start, count, q, dq, shade);
+    }
+    target.samples += static_cast<std::uint64_t>(count);
+}
+
 /// Visits the triangle's covered samples in the target's rows with
 /// interpolation weights w (summing to 1 up to rounding) and writes shade(w)
 /// there. Each span starts from weights derived from exact edge values and
@@ -259,6 +308,10 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns);
         const std::uint32_t* owners = owner_row(target, row);
         target.covered += static_cast<std::uint64_t>(count);
+        if (target.rank_keys != nullptr) {
+            fill_ranked_span<Real, Perspective>(draw, target, row_start, first_column, count, q, dq, shade);
+            return;
+        }
         if constexpr (!std::is_same_v<std::decay_t<ShadeLanes>, NoLanes>) {
             if (owners == nullptr && !target.depth_test && count >= kMinLanesSpan) {
                 glm::vec3* pixels = &image.pixels[row_start + static_cast<std::size_t>(first_column)];

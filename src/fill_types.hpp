@@ -69,6 +69,19 @@ struct FillTarget {
     /// `self`. Null: shade every covered sample.
     const std::uint32_t* owner = nullptr;
     std::uint32_t self = 0;
+    /// Painter's order by a test per sample instead of a sort (the fill in
+    /// mesh order, set_up_and_fill()): per sample of the image, the painter's
+    /// rank of the triangle whose colour it holds, `rank_keys` its key
+    /// (0: none yet, no triangle's key is 0) and `rank_ties` its tie-break;
+    /// the draw being filled writes a sample only when its own rank (`key`,
+    /// then `tie`) is higher, i.e. when painter's order draws it later.
+    /// `rank_ties` null: the draws come in the order of their ties (the
+    /// mesh's), so an equal key wins. `rank_keys` null: the draws come in
+    /// painter's order, each writes every sample it shades.
+    std::uint64_t* rank_keys = nullptr;
+    std::uint32_t* rank_ties = nullptr;
+    std::uint64_t key = 0;
+    std::uint32_t tie = 0;
 };
 
 /// No triangle covers the sample (Overdraw::shade_visible's owner buffer).

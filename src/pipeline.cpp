@@ -164,6 +164,12 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                  parts.colour_part_shaders,
                                  parts.specular_part_shaders,
                                  exact_gouraud && in_parts ? memory.vertex_colour_parts.data() : nullptr};
+    if (fills_in_mesh_order(fill_plan, out.aov_planes.any())) {
+        // One thread, ambient only: no record, sort or bins (fill_driver.hpp).
+        fill_in_mesh_order(scene, options, fill_plan, setup, out.original_triangle, rows, columns, memory.draws,
+                           memory.fill, out.image, stats, progress);
+        return;
+    }
     set_up_triangles(setup, memory.draws, stats, progress);
     const bool sort = !fill_plan.order_free || out.aov_planes.any();  // depth and id name the last triangle
     // Mesh order hook: a reordered mesh's equal depths are drawn in the caller's triangle order.

@@ -8,6 +8,7 @@
 #include "back_faces.hpp"
 #include "clipping.hpp"
 #include "painter_order.hpp"
+#include "prefetch.hpp"
 #include "raster.hpp"
 #include "term_counts.hpp"
 
@@ -504,9 +505,75 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
     }
 }
 
+/// How many triangles ahead set_up_and_fill() asks for what it will read.
+constexpr std::size_t kDirectAhead = 16;
+
+template <typename Real>
+std::uint64_t set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, DrawList<Real>& draws,
+                              RenderStats& stats, ProgressMonitor& progress) {
+    const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
+    const std::size_t chunks = (triangles.size() + kSetupChunk - 1) / kSetupChunk;
+    const FrameVector<ScreenVertex>& screen = input.vertices.screen;
+    ChunkVector<FillTriangle<Real>>& out = draws.direct_draws;
+    out.clear();
+    out.reserve(8);  // a clipped triangle's fan has at most 6 pieces: no allocation per triangle
+    ClipVertexStore<Real>& clip_vertices = draws.direct_clip_vertices;
+    SetupCounts counts;
+    TriangleSetup<Real> setup(input, out, clip_vertices, counts, draws.direct_vectors);
+    FillTarget<Real>& target = *fill.target;
+    const FrameVector<Varyings<Real>>& varyings = input.vertices.varyings;
+    const double rows = target.image.rows, columns = target.image.columns;
+    const std::size_t row_length = static_cast<std::size_t>(target.image.columns);
+    progress.begin_stage(0.1, 1.0, chunks);
+    for (std::size_t chunk = 0; chunk < chunks && !progress.cancelled(); ++chunk) {
+        const std::size_t end = std::min(triangles.size(), (chunk + 1) * kSetupChunk);
+        for (std::size_t t = chunk * kSetupChunk; t < end; ++t) {
+            if (t + kDirectAhead < triangles.size()) {
+                // The samples a triangle of a large mesh covers lie next to its
+                // first corner: ask for their ranks and pixels, and for the corners'
+                // varyings, a few triangles ahead (most are a cache miss each).
+                const Triangle& ahead = triangles[t + kDirectAhead];
+                const ScreenVertex& corner = screen[ahead[0]];
+                if (corner.row >= 0.0 && corner.row < rows && corner.column >= 0.0 && corner.column < columns) {
+                    const std::size_t at = static_cast<std::size_t>(corner.row) * row_length +
+                                           static_cast<std::size_t>(corner.column);
+                    // And the row below: a triangle of a pixel or two often covers two rows.
+                    const std::size_t below = corner.row + 1.0 < rows ? at + row_length : at;
+                    if (target.rank_keys != nullptr) {
+                        prefetch_address(target.rank_keys + at);
+                        prefetch_address(target.rank_keys + below);
+                    }
+                    prefetch_address(target.image.pixels.data() + at);
+                    prefetch_address(target.image.pixels.data() + below);
+                }
+                if (fill.reads_varyings) {
+                    for (std::uint32_t vertex : ahead) prefetch_object(&varyings[vertex]);
+                }
+            }
+            out.clear();
+            clip_vertices.clear();  // the draws pointing there are filled before the next triangle
+            setup.run(static_cast<std::uint32_t>(t));
+            if (out.empty()) continue;
+            if (fill.ranked) {
+                target.key = painter_key(triangles[t], screen);
+                target.tie = fill.original_triangle != nullptr ? fill.original_triangle[t] : static_cast<std::uint32_t>(t);
+            }
+            for (const FillTriangle<Real>& draw : out) fill.kernel(draw, target, *fill.vectors, *fill.constants);
+        }
+        progress.piece_done();
+    }
+    progress.throw_if_cancelled();
+    add_counts(counts, stats);
+    count_term_evaluations(input.scene, input.options, input.shader.effects, counts.lit_points,
+                           LitPoints::outside_the_fill, stats);
+    return counts.drawn;
+}
+
 #define PHONGRAST_INSTANTIATE_SETUP(Real)                                                                       \
     template void set_up_triangles<Real>(const SetupInput<Real>&, DrawList<Real>&, RenderStats&,                \
                                          ProgressMonitor&);                                                     \
+    template std::uint64_t set_up_and_fill<Real>(const SetupInput<Real>&, const DirectFill<Real>&, DrawList<Real>&, \
+                                                 RenderStats&, ProgressMonitor&);                               \
     template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, ChunkVector<FillTriangle<Real>>&, \
                                         ClipVertexStore<Real>&, SetupCounts&, LightVectorsAt<Real>&);
 PHONGRAST_INSTANTIATE_SETUP(float)

@@ -65,6 +65,11 @@ struct DrawList {
     std::vector<SetupCounts> chunk_counts;
     std::vector<LightVectorsAt<Real>> chunk_vectors;  ///< per chunk, not per thread (see light_vertices())
     std::vector<MappedRecords> chunk_mapped;  ///< chunk_draws' pages mapped so far (record_pages.hpp)
+    /// set_up_and_fill(): the draws of the one triangle being filled (at most
+    /// 6 pieces), its clipped corners and light vectors.
+    ChunkVector<FillTriangle<Real>> direct_draws;
+    ClipVertexStore<Real> direct_clip_vertices;
+    LightVectorsAt<Real> direct_vectors;
 };
 
 /// Everything set-up reads.
@@ -104,6 +109,35 @@ struct SetupInput {
 template <typename Real>
 void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, RenderStats& stats,
                       ProgressMonitor& progress);
+
+/// What set_up_and_fill() does with each triangle's draws: fills them into
+/// `target` (the whole image) with `kernel`. `ranked`: the picture depends on
+/// painter's order, so each draw carries its triangle's rank (its painter's
+/// key, then its index in the caller's mesh: `original_triangle`, or the
+/// index itself when null) and the target keeps, per sample, the rank of the
+/// colour written there (FillTarget::rank_keys); else (FillPlan::order_free)
+/// every draw writes what it covers.
+template <typename Real>
+struct DirectFill {
+    FillKernel<Real> kernel = nullptr;
+    const FillConstants<Real>* constants = nullptr;
+    FillTarget<Real>* target = nullptr;
+    LightVectorsAt<Real>* vectors = nullptr;
+    const std::uint32_t* original_triangle = nullptr;
+    bool ranked = true;
+    bool reads_varyings = true;  ///< set-up or the kernel reads the corners' varyings (colours vary)
+};
+
+/// Set-up and fill in one walk of the mesh, on the calling thread: each
+/// triangle set up as set_up_triangles() sets it up, its draws filled at once
+/// and forgotten, so no draw record reaches memory and nothing is sorted or
+/// binned (painter's order is the rank test of `fill`). Adds the triangle
+/// counts and set-up's lighting to `stats` (the fill's counts are in `fill`'s
+/// target) and returns the triangles drawn. Reports progress in pieces of
+/// kSetupChunk triangles, and stops early when the render is cancelled.
+template <typename Real>
+std::uint64_t set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, DrawList<Real>& draws,
+                              RenderStats& stats, ProgressMonitor& progress);
 
 /// Sets up mesh triangle `source`: appends its fill triangles (none, one, or
 /// one per piece of its clipped polygon) to `out` and counts it in `counts`.

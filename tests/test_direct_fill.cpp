@@ -1,0 +1,272 @@
+// The fill in mesh order (fill_in_mesh_order(), fill_driver.hpp): an
+// ambient-only render on one thread sets up and fills each triangle in one
+// walk of the mesh, keeping painter's order by a rank test per sample
+// instead of a sort. It must paint painter's picture bit for bit, with the
+// same counts, whatever the shader, mode, precision, colours, materials,
+// ties of equal depth, clipping, supersampling or mesh order; and it must
+// be the path an ambient-only render on one thread takes.
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "fill_driver.hpp"
+#include "mesh_order.hpp"
+#include "shuffled_mesh.hpp"
+#include "test_meshes.hpp"
+#include "test_render_modes.hpp"
+
+using namespace phongrast;
+using test_render_modes::same_bits;
+
+namespace {
+
+/// Allows or forbids the fill in mesh order for one scope.
+class MeshOrderFill {
+public:
+    explicit MeshOrderFill(bool allowed) : previous_(detail::set_fill_in_mesh_order_allowed(allowed)) {}
+    ~MeshOrderFill() { detail::set_fill_in_mesh_order_allowed(previous_); }
+    MeshOrderFill(const MeshOrderFill&) = delete;
+    MeshOrderFill& operator=(const MeshOrderFill&) = delete;
+
+private:
+    bool previous_;
+};
+
+/// A coloured sphere seen from outside: its back faces lie under its front
+/// faces, so most samples are painted twice and painter's order decides.
+Scene coloured_sphere_scene() {
+    Scene scene;
+    scene.mesh = test_meshes::uv_sphere(14, 26, 1.0);
+    for (const glm::dvec3& p : scene.mesh.positions) {
+        scene.mesh.colors.push_back(glm::vec3(0.5 + 0.5 * p.x, 0.5 + 0.5 * p.y, 0.3 + 0.2 * p.z));
+    }
+    scene.camera.eye = {0.4, 0.5, 4};
+    scene.camera.focal = 2;
+    scene.camera.sensor_height = scene.camera.sensor_width = 1.4;
+    scene.image = {56, 72, {0.1f, 0.2f, 0.3f}};
+    scene.material.ka = glm::vec3(0.9f, 0.7f, 0.8f);
+    scene.ambient = glm::vec3(0.8f);
+    scene.lights = {{{3, 3, 3}, {1, 1, 1}}};
+    scene.lighting = Lighting::only_ambient();
+    return scene;
+}
+
+/// Two squares of different colours in one plane facing the camera, the
+/// second over half the first, each listed as two triangles: their
+/// triangles' mean depths are equal, so painter's ties (mesh order) decide.
+Scene tied_squares_scene() {
+    Scene scene;
+    const glm::dvec3 corners[8] = {{-1, -1, 0}, {0.5, -1, 0}, {0.5, 0.5, 0}, {-1, 0.5, 0},
+                                   {-0.5, -0.5, 0}, {1, -0.5, 0}, {1, 1, 0}, {-0.5, 1, 0}};
+    for (int i = 0; i < 8; ++i) {
+        scene.mesh.positions.push_back(corners[i]);
+        scene.mesh.colors.push_back(i < 4 ? glm::vec3(0.9f, 0.2f, 0.1f) : glm::vec3(0.1f, 0.3f, 0.9f));
+    }
+    scene.mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
+    scene.camera.eye = {0, 0, 3};
+    scene.camera.focal = 2;
+    scene.camera.sensor_height = scene.camera.sensor_width = 1.6;
+    scene.image = {40, 40, {0, 0, 0}};
+    scene.material.ka = glm::vec3(0.9f);
+    scene.ambient = glm::vec3(0.8f);
+    scene.lighting = Lighting::only_ambient();
+    return scene;
+}
+
+/// The eye inside a coloured sphere near its wall: triangles cross the near
+/// plane and run far past the image's borders (clipped into fans).
+Scene inside_sphere_scene() {
+    Scene scene = coloured_sphere_scene();
+    scene.camera.eye = {0.1, 0.05, 0.9};
+    scene.camera.lookat = {-0.2, -0.1, -0.5};  // the far wall; the walls beside the eye cross the near plane
+    return scene;
+}
+
+void check_same_counts(const RenderStats& a, const RenderStats& b) {
+    CHECK(a.triangles_drawn == b.triangles_drawn);
+    CHECK(a.triangles_sorted == b.triangles_sorted);
+    CHECK(a.triangles_clipped == b.triangles_clipped);
+    CHECK(a.triangles_between_samples == b.triangles_between_samples);
+    CHECK(a.triangles_outside == b.triangles_outside);
+    CHECK(a.triangles_degenerate == b.triangles_degenerate);
+    CHECK(a.samples_covered == b.samples_covered);
+    CHECK(a.samples_shaded == b.samples_shaded);
+    CHECK(a.ambient_evaluations == b.ambient_evaluations);
+    CHECK(a.nonfinite_values_replaced == b.nonfinite_values_replaced);
+}
+
+/// Renders `scene` on one thread in mesh order, then on one thread and on
+/// two through painter's sort and bins: the same bits and counts; the first
+/// render must have filled in mesh order, the others not.
+void check_painters_picture(const Scene& scene, RenderOptions options) {
+    options.threads = 1;
+    const std::uint64_t before = detail::passes_filled_in_mesh_order();
+    const RenderResult direct = render(scene, options);
+    const std::uint64_t passes = options.samples_per_axis > 1 && options.sample_pattern == SamplePattern::rotated_grid
+                                     ? std::uint64_t(options.samples_per_axis) * std::uint64_t(options.samples_per_axis)
+                                     : 1;
+    CHECK(detail::passes_filled_in_mesh_order() == before + passes);
+    REQUIRE(direct.stats.triangles_drawn > 0);
+    RenderResult sorted;
+    {
+        MeshOrderFill forbidden(false);
+        sorted = render(scene, options);
+    }
+    options.threads = 2;
+    const RenderResult banded = render(scene, options);
+
+    CHECK(detail::passes_filled_in_mesh_order() == before + passes);
+    CHECK(same_bits(direct.image, sorted.image));
+    CHECK(same_bits(direct.image, banded.image));
+    check_same_counts(direct.stats, sorted.stats);
+    check_same_counts(direct.stats, banded.stats);
+}
+
+}  // namespace
+
+TEST_CASE("ambient-only on one thread fills in mesh order and paints painter's picture") {
+    struct Case {
+        const char* name;
+        Scene scene;
+    };
+    std::vector<Case> cases = {{"coloured sphere", coloured_sphere_scene()},
+                               {"tied squares", tied_squares_scene()},
+                               {"eye inside the sphere (clipped)", inside_sphere_scene()}};
+    {
+        Scene uniform = coloured_sphere_scene();
+        uniform.mesh.colors.assign(uniform.mesh.positions.size(), glm::vec3(0.3f, 0.6f, 0.9f));
+        cases.push_back({"one colour (order free)", uniform});
+        Scene materials = coloured_sphere_scene();
+        FaceMaterial dark, light;
+        dark.coefficients.ka = glm::vec3(0.1f, 0.2f, 0.3f);
+        light.coefficients.ka = glm::vec3(0.9f, 0.8f, 0.7f);
+        materials.mesh.materials = {dark, light};
+        for (std::size_t t = 0; t < materials.mesh.triangles.size(); ++t) {
+            materials.mesh.face_materials.push_back(t % 3 == 0 ? 1 : 0);
+        }
+        cases.push_back({"two materials", materials});
+    }
+    // The inside view clips in exact mode (near plane and image border).
+    CHECK(render(inside_sphere_scene(), RenderOptions::exact()).stats.triangles_clipped > 0);
+    for (const Case& c : cases) {
+        for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+            for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+                if (!mode.options.specialize_effects && shader == Shader::phong) continue;  // batches: not this path
+                Scene scene = c.scene;
+                scene.shader = shader;
+                INFO(c.name << ", " << to_string(shader) << ", " << mode.name);
+                check_painters_picture(scene, mode.options);
+            }
+        }
+    }
+}
+
+TEST_CASE("the fill in mesh order keeps painter's ties in mesh order") {
+    Scene scene = tied_squares_scene();
+    scene.shader = Shader::phong;
+    RenderOptions options = RenderOptions::exact();
+    options.threads = 1;
+    // The second square is listed last: where the two overlap, its colour.
+    const RenderResult later = render(scene, options);
+    const glm::vec3 centre = later.image.pixels[20 * 40 + 20];
+    CHECK(centre.z > centre.x);
+    // Listed first, the first square paints over it.
+    std::swap(scene.mesh.triangles[0], scene.mesh.triangles[2]);
+    std::swap(scene.mesh.triangles[1], scene.mesh.triangles[3]);
+    const RenderResult earlier = render(scene, options);
+    const glm::vec3 swapped = earlier.image.pixels[20 * 40 + 20];
+    CHECK(swapped.x > swapped.z);
+    check_painters_picture(scene, options);
+}
+
+TEST_CASE("the fill in mesh order supersamples as painter's fill does") {
+    for (SamplePattern pattern : {SamplePattern::ordered_grid, SamplePattern::rotated_grid}) {
+        for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+            Scene scene = coloured_sphere_scene();
+            scene.shader = shader;
+            RenderOptions options = RenderOptions::exact();
+            options.samples_per_axis = 2;
+            options.sample_pattern = pattern;
+            INFO(to_string(shader) << (pattern == SamplePattern::rotated_grid ? ", rotated grid" : ", ordered grid"));
+            check_painters_picture(scene, options);
+        }
+    }
+}
+
+TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's order") {
+    // A shuffled icosphere, reordered by the Renderer (mesh_order.hpp): the
+    // walk is in the copy's order, the ties must stay the caller's.
+    const std::size_t previous_min = detail::set_reorder_min_triangles(0);
+    const bool previous_always = detail::set_reorder_always(true);
+    Scene scene = coloured_sphere_scene();
+    scene.mesh = test_meshes::icosphere(8, 0.05);
+    std::mt19937 random(7);
+    test_meshes_order::shuffle_faces_and_vertices(scene.mesh, random);
+    scene.mesh.colors.clear();
+    for (const glm::dvec3& p : scene.mesh.positions) {
+        scene.mesh.colors.push_back(glm::vec3(0.5 + 0.5 * p.x, 0.5 + 0.5 * p.y, 0.5 + 0.5 * p.z));
+    }
+    // Twice each triangle, the copy a different colour: equal depths everywhere, ties decide.
+    const std::size_t count = scene.mesh.triangles.size();
+    const std::size_t vertices = scene.mesh.positions.size();
+    for (std::size_t v = 0; v < vertices; ++v) {
+        scene.mesh.positions.push_back(scene.mesh.positions[v]);
+        scene.mesh.colors.push_back(glm::vec3(1.0f) - scene.mesh.colors[v]);
+    }
+    for (std::size_t t = 0; t < count; ++t) {
+        Triangle copy = scene.mesh.triangles[t];
+        for (std::uint32_t& index : copy) index += static_cast<std::uint32_t>(vertices);
+        scene.mesh.triangles.push_back(copy);
+    }
+    std::shuffle(scene.mesh.triangles.begin(), scene.mesh.triangles.end(), random);
+    for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+        scene.shader = shader;
+        INFO(to_string(shader));
+        RenderOptions options = RenderOptions::exact();
+        options.threads = 1;
+        Renderer direct_renderer(options);
+        const std::uint64_t before = detail::passes_filled_in_mesh_order();
+        const RenderResult direct = direct_renderer.render(scene);
+        CHECK(detail::passes_filled_in_mesh_order() == before + 1);
+        RenderResult sorted;
+        {
+            MeshOrderFill forbidden(false);
+            Renderer sorted_renderer(options);
+            sorted = sorted_renderer.render(scene);
+        }
+        detail::set_reorder_min_triangles(std::numeric_limits<std::size_t>::max());
+        detail::set_reorder_always(false);
+        Renderer plain_renderer(options);
+        const RenderResult plain = plain_renderer.render(scene);  // the caller's order, not reordered
+        detail::set_reorder_min_triangles(0);
+        detail::set_reorder_always(true);
+        CHECK(same_bits(direct.image, sorted.image));
+        CHECK(same_bits(direct.image, plain.image));
+        check_same_counts(direct.stats, sorted.stats);
+    }
+    detail::set_reorder_min_triangles(previous_min);
+    detail::set_reorder_always(previous_always);
+}
+
+TEST_CASE("full lighting, extra outputs and the depth buffer do not fill in mesh order") {
+    Scene scene = coloured_sphere_scene();
+    scene.shader = Shader::gouraud;
+    RenderOptions options = RenderOptions::exact();
+    options.threads = 1;
+    const std::uint64_t before = detail::passes_filled_in_mesh_order();
+    scene.lighting = Lighting::full();
+    render(scene, options);
+    scene.lighting = Lighting::only_ambient();
+    RenderOptions with_id = options;
+    with_id.aovs.id = true;
+    render(scene, with_id);
+    RenderOptions depth_buffer = options;
+    depth_buffer.visibility = Visibility::depth_buffer;
+    render(scene, depth_buffer);
+    CHECK(detail::passes_filled_in_mesh_order() == before);
+}
