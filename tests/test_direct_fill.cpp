@@ -17,6 +17,7 @@
 #include "fill_driver.hpp"
 #include "mesh_order.hpp"
 #include "shuffled_mesh.hpp"
+#include "same_render_stats.hpp"
 #include "test_meshes.hpp"
 #include "test_render_modes.hpp"
 
@@ -87,19 +88,6 @@ Scene inside_sphere_scene() {
     return scene;
 }
 
-void check_same_counts(const RenderStats& a, const RenderStats& b) {
-    CHECK(a.triangles_drawn == b.triangles_drawn);
-    CHECK(a.triangles_sorted == b.triangles_sorted);
-    CHECK(a.triangles_clipped == b.triangles_clipped);
-    CHECK(a.triangles_between_samples == b.triangles_between_samples);
-    CHECK(a.triangles_outside == b.triangles_outside);
-    CHECK(a.triangles_degenerate == b.triangles_degenerate);
-    CHECK(a.samples_covered == b.samples_covered);
-    CHECK(a.samples_shaded == b.samples_shaded);
-    CHECK(a.ambient_evaluations == b.ambient_evaluations);
-    CHECK(a.nonfinite_values_replaced == b.nonfinite_values_replaced);
-}
-
 /// Renders `scene` on one thread in mesh order, then on one thread and on
 /// two through painter's sort and bins: the same bits and counts; the first
 /// render must have filled in mesh order, the others not.
@@ -123,8 +111,8 @@ void check_painters_picture(const Scene& scene, RenderOptions options) {
     CHECK(detail::passes_filled_in_mesh_order() == before + passes);
     CHECK(same_bits(direct.image, sorted.image));
     CHECK(same_bits(direct.image, banded.image));
-    check_same_counts(direct.stats, sorted.stats);
-    check_same_counts(direct.stats, banded.stats);
+    check_same_render_stats(direct.stats, sorted.stats);
+    check_same_render_stats(direct.stats, banded.stats);
 }
 
 }  // namespace
@@ -247,7 +235,7 @@ TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's
         detail::set_reorder_always(true);
         CHECK(same_bits(direct.image, sorted.image));
         CHECK(same_bits(direct.image, plain.image));
-        check_same_counts(direct.stats, sorted.stats);
+        check_same_render_stats(direct.stats, sorted.stats);
     }
     detail::set_reorder_min_triangles(previous_min);
     detail::set_reorder_always(previous_always);

@@ -16,6 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include "phongrast/render.hpp"
+#include "same_render_stats.hpp"
 #include "test_meshes.hpp"
 #include "test_render_modes.hpp"
 
@@ -57,23 +58,6 @@ long allocations_during(Frame&& frame) {
     frame();
     counting = false;
     return allocations.load();
-}
-
-void check_same_stats(const RenderStats& a, const RenderStats& b) {
-    CHECK(a.triangles_in == b.triangles_in);
-    CHECK(a.triangles_culled == b.triangles_culled);
-    CHECK(a.triangles_degenerate == b.triangles_degenerate);
-    CHECK(a.triangles_dropped == b.triangles_dropped);
-    CHECK(a.triangles_clipped == b.triangles_clipped);
-    CHECK(a.triangles_outside == b.triangles_outside);
-    CHECK(a.triangles_between_samples == b.triangles_between_samples);
-    CHECK(a.triangles_drawn == b.triangles_drawn);
-    CHECK(a.samples_covered == b.samples_covered);
-    CHECK(a.samples_shaded == b.samples_shaded);
-    CHECK(a.ambient_evaluations == b.ambient_evaluations);
-    CHECK(a.diffuse_evaluations == b.diffuse_evaluations);
-    CHECK(a.specular_evaluations == b.specular_evaluations);
-    CHECK(a.normal_interpolations == b.normal_interpolations);
 }
 
 /// A coloured sphere; `close` puts the eye near the surface so that
@@ -138,7 +122,7 @@ TEST_CASE("a Renderer paints what render() paints, frame after frame, whatever c
         const RenderResult fresh = render(frame.scene, frame.options);
         REQUIRE(fresh.stats.samples_shaded > 100);
         CHECK(test_render_modes::same_bits(reused.image, fresh.image));
-        check_same_stats(reused.stats, fresh.stats);
+        check_same_render_stats(reused.stats, fresh.stats);
     }
 }
 
@@ -187,7 +171,7 @@ void check_warm_equals_fresh(const Scene& scene, const RenderOptions& options) {
     const RenderResult fresh = render(scene, options);
     REQUIRE(fresh.stats.samples_shaded > 0);
     CHECK(test_render_modes::same_bits(warm.image, fresh.image));
-    check_same_stats(warm.stats, fresh.stats);
+    check_same_render_stats(warm.stats, fresh.stats);
 }
 
 /// Two objects (a sphere and a smaller one beside it): a version-2 scene, which render() assembles.
@@ -236,7 +220,7 @@ TEST_CASE("render() forgets the scene between calls: a mesh changed in place at 
     const RenderResult fresh = render(scene);
     CHECK_FALSE(test_render_modes::same_bits(before.image, after.image));
     CHECK(test_render_modes::same_bits(after.image, fresh.image));
-    check_same_stats(after.stats, fresh.stats);
+    check_same_render_stats(after.stats, fresh.stats);
 }
 
 TEST_CASE("render() from a progress callback gets its own memory, and a failed call leaves none behind") {
