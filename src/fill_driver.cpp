@@ -198,6 +198,8 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
         if (progress.cancelled()) return;
         FillTarget<Real> target{image, memory.depth_buffer, band * kBandRows, std::min(rows, (band + 1) * kBandRows),
                                 plan.depth_test, 0, 0};
+        PendingPhongSamples<Real> pending;
+        target.pending = &pending;
         const std::size_t band_start = static_cast<std::size_t>(target.row_begin) * static_cast<std::size_t>(columns);
         const std::size_t band_end = static_cast<std::size_t>(target.row_end) * static_cast<std::size_t>(columns);
         fill_pixels(image.pixels.data() + band_start, band_end - band_start, scene.image.background);
@@ -207,6 +209,7 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
                 ? fill_visible_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors,
                                      memory.band_layers[band], progress)
                 : fill_every_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors, progress);
+        finish_pending(target);
         memory.shaded[band] = target.samples;
         memory.replaced[band] = target.replaced;
         progress.piece_done();

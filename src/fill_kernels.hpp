@@ -371,17 +371,20 @@ void fill_flat(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVe
     fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; }, NoLanes{});
 }
 
-/// Visits the triangle's covered samples in the target's rows, gathering up
-/// to kSampleBatch of them (across rows) with their weights as fill_samples
-/// computes them, then calls shade_batch(n, w, out) and writes the batch.
-/// Gathering across a triangle's rows keeps batches full for small triangles,
-/// whose spans are only a few samples long.
-template <typename Real, bool Perspective, typename ShadeBatch>
-void fill_sample_batches(const FillTriangle<Real>& draw, FillTarget<Real>& target, ShadeBatch&& shade_batch) {
-    Image& image = target.image;
-    Lanes<Real> w[3], depth, out[3];
+/// Visits the triangle's covered samples in the target's rows (only those
+/// it owns, with an owner buffer), gathering up to room() of them (across
+/// rows) with their weights as fill_samples computes them, renormalised, and
+/// their depths, then calls commit(n, w, depth, index) and gathers again.
+/// Gathering across a triangle's rows keeps batches full for small
+/// triangles, whose spans are only a few samples long.
+template <typename Real, bool Perspective, typename Room, typename Commit>
+PHONGRAST_FILL_INLINE void gather_sample_batches(const FillTriangle<Real>& draw, FillTarget<Real>& target, Room&& room,
+                                                 Commit&& commit) {
+    const Image& image = target.image;
+    Lanes<Real> w[3], depth;
     std::size_t index[kSampleBatch];
     int n = 0;
+    int limit = room();
     const auto flush = [&] {
         if constexpr (Perspective) {
             // Weights linear in the triangle's plane: renormalise the depth-divided ones.
@@ -396,19 +399,10 @@ void fill_sample_batches(const FillTriangle<Real>& draw, FillTarget<Real>& targe
                 depth[l] = w[0][l] * draw.depth[0] + w[1][l] * draw.depth[1] + w[2][l] * draw.depth[2];
             }
         }
-        shade_batch(n, static_cast<const Lanes<Real>*>(w), out);
-        for (int l = 0; l < n; ++l) {
-            if (target.depth_test) {
-                // <= lets a later triangle at equal depth win, as in painter's order.
-                if (!(depth[l] <= target.depth_buffer[index[l]])) continue;
-                target.depth_buffer[index[l]] = depth[l];
-            }
-            const glm::vec3 pixel(static_cast<float>(out[0][l]), static_cast<float>(out[1][l]),
-                                  static_cast<float>(out[2][l]));
-            image.pixels[index[l]] = finite_or_replaced(pixel, target.replaced);
-            ++target.samples;
-        }
+        commit(n, static_cast<const Lanes<Real>*>(w), static_cast<const Real*>(depth),
+               static_cast<const std::size_t*>(index));
         n = 0;
+        limit = room();
     };
     for_each_weighted_span<Real, Perspective>(
         draw, target,
@@ -426,10 +420,42 @@ void fill_sample_batches(const FillTriangle<Real>& draw, FillTarget<Real>& targe
             w[1][n] = q[1] + dq[1] * step_count;
             w[2][n] = q[2] + dq[2] * step_count;
             index[n] = row_start + static_cast<std::size_t>(k);
-            if (++n == kSampleBatch) flush();
+            if (++n == limit) flush();
         }
     });
     if (n > 0) flush();
+}
+
+/// Writes n shaded samples (out) at `index`, with the depth test when the
+/// target has one, counting them; lane order is write order.
+template <typename Real>
+PHONGRAST_FILL_INLINE void write_shaded(FillTarget<Real>& target, int n, const Real* depth, const std::size_t* index,
+                                        const Lanes<Real>* out) {
+    Image& image = target.image;
+    for (int l = 0; l < n; ++l) {
+        if (target.depth_test) {
+            // <= lets a later triangle at equal depth win, as in painter's order.
+            if (!(depth[l] <= target.depth_buffer[index[l]])) continue;
+            target.depth_buffer[index[l]] = depth[l];
+        }
+        const glm::vec3 pixel(static_cast<float>(out[0][l]), static_cast<float>(out[1][l]),
+                              static_cast<float>(out[2][l]));
+        image.pixels[index[l]] = finite_or_replaced(pixel, target.replaced);
+        ++target.samples;
+    }
+}
+
+/// Gathers the triangle's samples kSampleBatch at a time (gather_sample_batches()),
+/// calls shade_batch(n, w, out) on each batch and writes it.
+template <typename Real, bool Perspective, typename ShadeBatch>
+void fill_sample_batches(const FillTriangle<Real>& draw, FillTarget<Real>& target, ShadeBatch&& shade_batch) {
+    gather_sample_batches<Real, Perspective>(
+        draw, target, [] { return kSampleBatch; },
+        [&](int n, const Lanes<Real>* w, const Real* depth, const std::size_t* index) {
+            Lanes<Real> out[3];
+            shade_batch(n, w, out);
+            write_shaded(target, n, depth, index, out);
+        });
 }
 
 /// Gouraud on a textured face, n samples at a time (structure of arrays, as
@@ -516,6 +542,49 @@ void fill_phong(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightV
     });
 }
 
+/// Shades the samples waiting in `pending` and writes them (in the order they joined).
+template <typename Real, bool Ambient, bool Diffuse, bool Specular, bool UniformColor>
+void shade_and_write_pending(PendingPhongSamples<Real>& pending, FillTarget<Real>& target) {
+    Lanes<Real> out[3];
+    shade_pending_phong<Real, UniformColor, FixedTerms<Ambient, Diffuse, Specular>>(pending, out);
+    write_shaded(target, pending.count, pending.depth, pending.index, out);
+    pending.count = 0;
+}
+
+/// fill_phong() with per-sample light vectors, its samples shaded together
+/// with those of the triangles before and after it (PendingPhongSamples): the
+/// same colours, written in the same order. A target with nowhere to keep
+/// them (a caller filling one triangle at a time) has this triangle's
+/// samples shaded and written before the call returns.
+template <typename Real, bool Perspective, bool Ambient, bool Diffuse, bool Specular, bool UniformColor>
+void fill_phong_pending(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
+                        const FillConstants<Real>& constants) {
+    PendingPhongSamples<Real>* pending = target.pending;
+    if (pending == nullptr) {
+        PendingPhongSamples<Real> own;
+        target.pending = &own;
+        fill_phong_pending<Real, Perspective, Ambient, Diffuse, Specular, UniformColor>(draw, target, vectors, constants);
+        finish_pending(target);
+        target.pending = nullptr;
+        return;
+    }
+    constexpr auto shade_and_write = &shade_and_write_pending<Real, Ambient, Diffuse, Specular, UniformColor>;
+    if (pending->count > 0 && (pending->surface != draw.surface || pending->constants != &constants ||
+                               pending->shade_and_write != shade_and_write)) {
+        pending->shade_and_write(*pending, target);  // another material's (or kernel's) samples first
+    }
+    pending->surface = draw.surface;
+    pending->constants = &constants;
+    pending->vectors = &vectors;
+    pending->shade_and_write = shade_and_write;
+    gather_sample_batches<Real, Perspective>(
+        draw, target, [&] { return kSampleBatch - pending->count; },
+        [&](int n, const Lanes<Real>* w, const Real* depth, const std::size_t* index) {
+            add_pending_samples<Real, UniformColor>(draw, n, w, depth, index, *pending);
+            if (pending->count == kSampleBatch) shade_and_write(*pending, target);
+        });
+}
+
 /// Phong with neither diffuse nor specular needs no normal and no light: per
 /// sample it is the ambient term of the interpolated colour, which costs what
 /// Gouraud's interpolation costs. It goes through fill_samples (long spans
@@ -580,8 +649,8 @@ FillKernel<Real> pick_phong_vectors_color(const KernelChoice& c) {
                                : &fill_phong_unlit<Real, Perspective, Ambient, false>;
     }
     if (c.per_sample_vectors) {
-        return c.uniform_color ? &fill_phong<Real, Perspective, Ambient, Diffuse, Specular, true, true>
-                               : &fill_phong<Real, Perspective, Ambient, Diffuse, Specular, true, false>;
+        return c.uniform_color ? &fill_phong_pending<Real, Perspective, Ambient, Diffuse, Specular, true>
+                               : &fill_phong_pending<Real, Perspective, Ambient, Diffuse, Specular, false>;
     }
     return c.uniform_color ? &fill_phong<Real, Perspective, Ambient, Diffuse, Specular, false, true>
                            : &fill_phong<Real, Perspective, Ambient, Diffuse, Specular, false, false>;

@@ -572,6 +572,80 @@ void shade_phong_samples(const FillTriangle<Real>& draw, int n, const Lanes<Real
     }
 }
 
+/// Adds n samples of `draw` (weights w, depths, image indices) to `pending`
+/// after those waiting: their colour (unless one colour for all), normal and
+/// camera-space point, each interpolated as interpolate_lanes() does.
+/// Out of line: called once or twice per triangle, and inlined it would be
+/// copied into each of the kernels' many instantiations.
+template <typename Real, bool UniformColor>
+PHONGRAST_NOINLINE void add_pending_samples(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w,
+                                               const Real* depth, const std::size_t* index,
+                                               PendingPhongSamples<Real>& pending) {
+    const int at = pending.count;
+    const auto interpolate = [&](Real a, Real b, Real c, Real* out) {
+        for (int l = 0; l < n; ++l) out[at + l] = (w[0][l] * a + w[1][l] * b) + w[2][l] * c;
+    };
+    for (int c = 0; c < 3; ++c) {
+        if (!UniformColor) interpolate(draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], pending.color[c]);
+        interpolate(draw.v[0]->normal[c], draw.v[1]->normal[c], draw.v[2]->normal[c], pending.normal[c]);
+        interpolate(draw.v[0]->position[c], draw.v[1]->position[c], draw.v[2]->position[c], pending.point[c]);
+    }
+    for (int l = 0; l < n; ++l) {
+        pending.depth[at + l] = depth[l];
+        pending.index[at + l] = index[l];
+    }
+    pending.count = at + n;
+}
+
+/// shade_phong_batch() with per-sample light vectors on the samples waiting
+/// in `pending` (of any triangles of one material), into out: lane for lane
+/// the same operations, on kSampleBatch lanes (a constant trip count: whole
+/// vectors, no remainder); the lanes past pending.count shade copies of the
+/// first sample and are never read. Overwrites the pending normals.
+template <typename Real, bool UniformColor, typename Terms>
+PHONGRAST_FILL_INLINE void shade_pending_phong(PendingPhongSamples<Real>& pending, Lanes<Real>* out) {
+    static_assert(kPendingSamples == kSampleBatch, "a pending batch is one batch of lanes");
+    constexpr int n = kSampleBatch;
+    const Terms terms;
+    const FillConstants<Real>& constants = *pending.constants;
+    const LightRig<Real>& rig = constants.rig[pending.surface];
+    for (int l = pending.count; l < n; ++l) {
+        for (int c = 0; c < 3; ++c) {
+            pending.color[c][l] = pending.color[c][0];
+            pending.normal[c][l] = pending.normal[c][0];
+            pending.point[c][l] = pending.point[c][0];
+        }
+    }
+    Lanes<Real> color[3];
+    for (int c = 0; c < 3; ++c) {
+        for (int l = 0; l < n; ++l) color[c][l] = UniformColor ? constants.color[c] : pending.color[c][l];
+        for (int l = 0; l < n; ++l) out[c][l] = Real(0);
+        if (terms.ambient()) {
+            const Real factor = rig.ambient_factor[c];
+            for (int l = 0; l < n; ++l) out[c][l] += factor * color[c][l];
+        }
+    }
+    const std::vector<CameraLight<Real>>& lights = rig.active_lights;
+    if (!(terms.diffuse() || terms.specular()) || lights.empty()) return;
+    Lanes<Real>* normal = pending.normal;
+    const Lanes<Real>* point = pending.point;
+    normalize_lanes(n, normal[0], normal[1], normal[2]);
+    Lanes<Real> eye[3];
+    if (terms.specular() && rig.eye_at_infinity) {
+        for (int c = 0; c < 3; ++c) {
+            for (int l = 0; l < n; ++l) eye[c][l] = kEyeAtInfinity<Real>[c];  // orthographic: V = -f
+        }
+    } else if (terms.specular()) {
+        for (int c = 0; c < 3; ++c) {
+            for (int l = 0; l < n; ++l) eye[c][l] = -point[c][l];
+        }
+        normalize_lanes(n, eye[0], eye[1], eye[2]);  // the eye is the camera-space origin
+    }
+    for (std::size_t k = 0; k < lights.size(); ++k) {
+        add_light_lanes<Real, true>(n, k, terms, lights, *pending.vectors, rig, normal, point, eye, color, out);
+    }
+}
+
 }  // namespace PHONGRAST_FILL_ISA
 }  // namespace phongrast::detail
 

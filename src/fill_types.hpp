@@ -9,6 +9,7 @@
 #define PHONGRAST_SRC_FILL_TYPES_HPP
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -53,6 +54,9 @@ struct FillTriangle {
 static_assert(sizeof(void*) != 8 || sizeof(FillTriangle<float>) <= 120,
               "FillTriangle is most of the memory per triangle on large meshes: keep it at 120 bytes");
 
+template <typename Real>
+struct PendingPhongSamples;
+
 /// The rows of the image (in samples) one task fills, and what it counts.
 template <typename Real>
 struct FillTarget {
@@ -82,6 +86,12 @@ struct FillTarget {
     std::uint32_t* rank_ties = nullptr;
     std::uint64_t key = 0;
     std::uint32_t tie = 0;
+    /// Where Phong's kernels with per-sample light vectors gather the samples
+    /// of several triangles for one batch of shading (PendingPhongSamples);
+    /// the driver that sets it calls finish_pending() after the band's last
+    /// triangle. Null: each triangle's samples are shaded and written by its
+    /// own kernel call.
+    PendingPhongSamples<Real>* pending = nullptr;
 };
 
 /// No triangle covers the sample (Overdraw::shade_visible's owner buffer).
@@ -144,6 +154,39 @@ struct FillConstants {
 
     const LightRig<Real>& rig_of(const FillTriangle<Real>& draw) const { return rig[draw.surface]; }
 };
+
+/// Samples of consecutive triangles of one band, waiting to be shaded
+/// together: a 12k-triangle mesh at 256x256 has two or three visible samples
+/// per triangle, and a batch per triangle would shade a whole vector of
+/// lanes for them (most lanes wasted, and the batch's set-up paid per
+/// triangle). Each sample's interpolated attributes are computed from its
+/// own triangle's corners when it joins; the lighting of the batch, lane by
+/// lane the same operations as a batch of one triangle's, runs when it is
+/// full, when the next triangle has another material, or when the band ends.
+/// Writes keep the order of the samples' triangles, so a later triangle's
+/// sample still lands after an earlier one's.
+inline constexpr int kPendingSamples = 32;
+template <typename Real>
+struct PendingPhongSamples {
+    alignas(64) Real color[3][kPendingSamples];  ///< unused with one colour (FillConstants::uniform_color)
+    alignas(64) Real normal[3][kPendingSamples];
+    alignas(64) Real point[3][kPendingSamples];  ///< camera space
+    alignas(64) Real depth[kPendingSamples];
+    std::size_t index[kPendingSamples];  ///< into the image
+    int count = 0;
+    std::uint32_t surface = 0;  ///< the material of every sample waiting
+    const FillConstants<Real>* constants = nullptr;
+    const LightVectorsAt<Real>* vectors = nullptr;  ///< the band's (read only with per-triangle vectors)
+    /// Shades the samples waiting and writes them (compiled with the kernel that gathered them).
+    void (*shade_and_write)(PendingPhongSamples&, FillTarget<Real>&) = nullptr;
+};
+
+/// Shades and writes whatever samples wait in `target`'s PendingPhongSamples.
+template <typename Real>
+void finish_pending(FillTarget<Real>& target) {
+    PendingPhongSamples<Real>* pending = target.pending;
+    if (pending != nullptr && pending->count > 0) pending->shade_and_write(*pending, target);
+}
 
 template <typename Real>
 using FillKernel = void (*)(const FillTriangle<Real>&, FillTarget<Real>&, LightVectorsAt<Real>&,
