@@ -383,6 +383,12 @@ PHONGRAST_FILL_INLINE void gather_sample_batches(const FillTriangle<Real>& draw,
     const Image& image = target.image;
     Lanes<Real> w[3], depth;
     std::size_t index[kSampleBatch];
+    // A batch's first kGatherGroup lanes hold values, samples or zeros, so that
+    // a small batch can be read as a whole vector group (add_pending_samples()).
+    for (int l = 0; l < kGatherGroup; ++l) {
+        w[0][l] = w[1][l] = w[2][l] = depth[l] = Real(0);
+        index[l] = 0;
+    }
     int n = 0;
     int limit = room();
     const auto flush = [&] {

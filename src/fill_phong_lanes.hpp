@@ -32,6 +32,11 @@ constexpr int kSampleBatch = 32;
 template <typename Real>
 using Lanes = Real[kSampleBatch];
 
+/// The first lanes of a gathered batch that gather_sample_batches() sets
+/// (to zero) before gathering, so that code may read a whole group of them
+/// whatever the batch's size.
+constexpr int kGatherGroup = 8;
+
 /// The lighting terms a batch evaluates: fixed at compile time for the specialised kernels.
 template <bool Ambient, bool Diffuse, bool Specular>
 struct FixedTerms {
@@ -579,20 +584,37 @@ void shade_phong_samples(const FillTriangle<Real>& draw, int n, const Lanes<Real
 /// copied into each of the kernels' many instantiations.
 template <typename Real, bool UniformColor>
 PHONGRAST_NOINLINE void add_pending_samples(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w,
-                                               const Real* depth, const std::size_t* index,
-                                               PendingPhongSamples<Real>& pending) {
+                                            const Real* depth, const std::size_t* index,
+                                            PendingPhongSamples<Real>& pending) {
     const int at = pending.count;
-    const auto interpolate = [&](Real a, Real b, Real c, Real* out) {
-        for (int l = 0; l < n; ++l) out[at + l] = (w[0][l] * a + w[1][l] * b) + w[2][l] * c;
+    // The weights are the caller's, never the pending arrays: restrict lets
+    // GCC vectorise without checking at run time whether they overlap.
+    const Real* __restrict w0 = w[0];
+    const Real* __restrict w1 = w[1];
+    const Real* __restrict w2 = w[2];
+    const auto add = [&](int lanes) PHONGRAST_INLINE_LAMBDA {
+        const auto interpolate = [&](Real a, Real b, Real c, Real* __restrict out) PHONGRAST_INLINE_LAMBDA {
+            for (int l = 0; l < lanes; ++l) out[at + l] = (w0[l] * a + w1[l] * b) + w2[l] * c;
+        };
+        for (int c = 0; c < 3; ++c) {
+            if (!UniformColor) interpolate(draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], pending.color[c]);
+            interpolate(draw.v[0]->normal[c], draw.v[1]->normal[c], draw.v[2]->normal[c], pending.normal[c]);
+            interpolate(draw.v[0]->position[c], draw.v[1]->position[c], draw.v[2]->position[c], pending.point[c]);
+        }
+        for (int l = 0; l < lanes; ++l) {
+            pending.depth[at + l] = depth[l];
+            pending.index[at + l] = index[l];
+        }
     };
-    for (int c = 0; c < 3; ++c) {
-        if (!UniformColor) interpolate(draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], pending.color[c]);
-        interpolate(draw.v[0]->normal[c], draw.v[1]->normal[c], draw.v[2]->normal[c], pending.normal[c]);
-        interpolate(draw.v[0]->position[c], draw.v[1]->position[c], draw.v[2]->position[c], pending.point[c]);
-    }
-    for (int l = 0; l < n; ++l) {
-        pending.depth[at + l] = depth[l];
-        pending.index[at + l] = index[l];
+    if (n <= kGatherGroup && at + kGatherGroup <= kPendingSamples) {
+        // The usual case (two or three samples): a whole group of lanes, so
+        // each loop is a vector instruction or two instead of scalar
+        // remainder code. The lanes past n (zero weights, see
+        // gather_sample_batches()) land where the next samples or the
+        // batch's padding will be written.
+        add(kGatherGroup);
+    } else {
+        add(n);
     }
     pending.count = at + n;
 }
