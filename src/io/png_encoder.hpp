@@ -30,6 +30,8 @@ enum class PngFilter : std::uint8_t { none = 0, sub = 1, up = 2, average = 3, pa
 struct PngSettings {
     int level;
     PngFilter filter;
+    /// The level for 16-bit samples, whose low bytes compress worse (-1: `level`).
+    int level_16_bit = -1;
 };
 PngSettings png_settings(PngCompression compression);
 
