@@ -432,6 +432,22 @@ PHONGRAST_FILL_INLINE void shade_ambient_lanes(const FillTriangle<Real>& draw, i
     }
 }
 
+/// The unit vector from each lane's camera-space point to the eye (the
+/// origin), or the orthographic camera's one direction.
+template <typename Real>
+PHONGRAST_FILL_INLINE void eye_lanes(int n, bool eye_at_infinity, const Lanes<Real>* point, Lanes<Real>* eye) {
+    if (eye_at_infinity) {
+        for (int c = 0; c < 3; ++c) {
+            for (int l = 0; l < n; ++l) eye[c][l] = kEyeAtInfinity<Real>[c];  // orthographic: V = -f
+        }
+        return;
+    }
+    for (int c = 0; c < 3; ++c) {
+        for (int l = 0; l < n; ++l) eye[c][l] = -point[c][l];
+    }
+    normalize_lanes(n, eye[0], eye[1], eye[2]);
+}
+
 /// The unit normal of each lane, its camera-space point (per-sample vectors)
 /// and, for specular, the unit vector to the eye.
 template <typename Real, bool PerSampleVectors, typename Terms>
@@ -447,16 +463,7 @@ PHONGRAST_FILL_INLINE void surface_lanes(const FillTriangle<Real>& draw, int n, 
         for (int c = 0; c < 3; ++c) {
             interpolate_lanes(n, w, draw.v[0]->position[c], draw.v[1]->position[c], draw.v[2]->position[c], point[c]);
         }
-        if (terms.specular() && eye_at_infinity) {
-            for (int c = 0; c < 3; ++c) {
-                for (int l = 0; l < n; ++l) eye[c][l] = kEyeAtInfinity<Real>[c];  // orthographic: V = -f
-            }
-        } else if (terms.specular()) {
-            for (int c = 0; c < 3; ++c) {
-                for (int l = 0; l < n; ++l) eye[c][l] = -point[c][l];
-            }
-            normalize_lanes(n, eye[0], eye[1], eye[2]);  // the eye is the camera-space origin
-        }
+        if (terms.specular()) eye_lanes(n, eye_at_infinity, point, eye);
     } else if (terms.specular()) {
         for (int c = 0; c < 3; ++c) {
             for (int l = 0; l < n; ++l) eye[c][l] = vectors.to_eye[c];
@@ -653,16 +660,7 @@ PHONGRAST_FILL_INLINE void shade_pending_phong(PendingPhongSamples<Real>& pendin
     const Lanes<Real>* point = pending.point;
     normalize_lanes(n, normal[0], normal[1], normal[2]);
     Lanes<Real> eye[3];
-    if (terms.specular() && rig.eye_at_infinity) {
-        for (int c = 0; c < 3; ++c) {
-            for (int l = 0; l < n; ++l) eye[c][l] = kEyeAtInfinity<Real>[c];  // orthographic: V = -f
-        }
-    } else if (terms.specular()) {
-        for (int c = 0; c < 3; ++c) {
-            for (int l = 0; l < n; ++l) eye[c][l] = -point[c][l];
-        }
-        normalize_lanes(n, eye[0], eye[1], eye[2]);  // the eye is the camera-space origin
-    }
+    if (terms.specular()) eye_lanes(n, rig.eye_at_infinity, point, eye);
     for (std::size_t k = 0; k < lights.size(); ++k) {
         add_light_lanes<Real, true>(n, k, terms, lights, *pending.vectors, rig, normal, point, eye, color, out);
     }

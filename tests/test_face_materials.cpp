@@ -32,21 +32,12 @@ Scene lit_scene(Shader shader) {
     return scene;
 }
 
-FaceMaterial material(const char* name, glm::vec3 kd, glm::vec3 ks, float n) {
-    FaceMaterial m;
-    m.name = name;
-    m.coefficients.kd = kd;
-    m.coefficients.ks = ks;
-    m.coefficients.n = n;
-    return m;
-}
-
 /// A coloured sphere whose faces use material 0 (matte red) or, every third, 1 (shiny blue).
 Mesh two_material_sphere() {
     Mesh mesh = test_meshes::uv_sphere(10, 14, 0.8);
     test_meshes::color_by_position(mesh);
-    mesh.materials = {material("matte", glm::vec3(0.9f, 0.2f, 0.1f), glm::vec3(0.0f), 1.0f),
-                      material("shiny", glm::vec3(0.1f, 0.3f, 0.8f), glm::vec3(0.9f), 20.0f)};
+    mesh.materials = {test_meshes::face_material("matte", glm::vec3(0.9f, 0.2f, 0.1f), glm::vec3(0.0f), 1.0f),
+                      test_meshes::face_material("shiny", glm::vec3(0.1f, 0.3f, 0.8f), glm::vec3(0.9f), 20.0f)};
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) mesh.face_materials.push_back(t % 3 == 0 ? 1 : 0);
     return mesh;
 }

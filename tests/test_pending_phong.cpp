@@ -21,15 +21,6 @@ using namespace phongrast;
 
 namespace {
 
-FaceMaterial material(const char* name, glm::vec3 kd, glm::vec3 ks, float n) {
-    FaceMaterial m;
-    m.name = name;
-    m.coefficients.kd = kd;
-    m.coefficients.ks = ks;
-    m.coefficients.n = n;
-    return m;
-}
-
 /// A sphere of small triangles (two or three samples each at 96x96), coloured
 /// by position; with `materials`, every third face shiny, the others matte
 /// (so batches end at every change of material).
@@ -38,8 +29,8 @@ Scene small_triangles_scene(bool materials) {
     scene.mesh = test_meshes::uv_sphere(40, 80, 1.0);
     test_meshes::color_by_position(scene.mesh);
     if (materials) {
-        scene.mesh.materials = {material("matte", glm::vec3(0.9f, 0.2f, 0.1f), glm::vec3(0.0f), 1.0f),
-                                material("shiny", glm::vec3(0.1f, 0.3f, 0.8f), glm::vec3(0.9f), 20.0f)};
+        scene.mesh.materials = {test_meshes::face_material("matte", glm::vec3(0.9f, 0.2f, 0.1f), glm::vec3(0.0f), 1.0f),
+                                test_meshes::face_material("shiny", glm::vec3(0.1f, 0.3f, 0.8f), glm::vec3(0.9f), 20.0f)};
         for (std::size_t t = 0; t < scene.mesh.triangles.size(); ++t) {
             scene.mesh.face_materials.push_back(t % 3 == 0 ? 1 : 0);
         }

@@ -37,6 +37,17 @@ void color_by_position(Mesh& mesh);
 /// show a torus from above at an angle.
 Mesh rotated_about_x(Mesh mesh, double degrees);
 
+/// A face material (Mesh::materials) with these diffuse and specular
+/// coefficients and exponent, the rest left at the defaults.
+inline FaceMaterial face_material(const char* name, glm::vec3 kd, glm::vec3 ks, float n) {
+    FaceMaterial m;
+    m.name = name;
+    m.coefficients.kd = kd;
+    m.coefficients.ks = ks;
+    m.coefficients.n = n;
+    return m;
+}
+
 }  // namespace phongrast::support
 
 #endif  // PHONGRAST_SUPPORT_MESHES_HPP
