@@ -147,6 +147,33 @@ TEST_CASE("the PNG writer's file holds exactly the encoded PNG, into a new empty
     CHECK(contents(folder.file("new.png")) == expected);
 }
 
+TEST_CASE("the default PNG compression deflates 8-bit samples at level 2 and 16-bit samples at level 4") {
+    // Each the fastest level within 10% of OpenImageIO's size on renders (docs/startup.md).
+    // A smooth gradient with noise, large enough for the levels' outputs to differ.
+    const int side = 96;
+    std::vector<std::uint8_t> rgb8(side * side * 3);
+    std::vector<std::uint16_t> rgb16(side * side * 3);
+    for (std::size_t i = 0; i < rgb8.size(); ++i) {
+        const std::uint32_t noise = static_cast<std::uint32_t>(i) * 2654435761u;
+        rgb16[i] = static_cast<std::uint16_t>(i * 7 + (noise >> 28));
+        rgb8[i] = static_cast<std::uint8_t>(rgb16[i] >> 4);
+    }
+    const io::detail::PngSettings standard = io::detail::png_settings(io::PngCompression::standard);
+    const auto encoded = [](const void* data, int bit_depth, io::detail::PngSettings settings) {
+        io::detail::PngPixels pixels;
+        pixels.data = data;
+        pixels.rows = pixels.columns = 96;
+        pixels.bit_depth = bit_depth;
+        return io::detail::encode_png(pixels, settings);
+    };
+    const std::string eight = encoded(rgb8.data(), 8, standard);
+    CHECK(eight == encoded(rgb8.data(), 8, {2, io::detail::PngFilter::up}));
+    CHECK(eight != encoded(rgb8.data(), 8, {4, io::detail::PngFilter::up}));
+    const std::string sixteen = encoded(rgb16.data(), 16, standard);
+    CHECK(sixteen == encoded(rgb16.data(), 16, {4, io::detail::PngFilter::up}));
+    CHECK(sixteen != encoded(rgb16.data(), 16, {2, io::detail::PngFilter::up}));
+}
+
 TEST_CASE("an image converted to 8-bit values and written as PNG is write_image's file, byte for byte") {
     TemporaryFolder folder;
     Image image(37, 53);  // odd sizes: the conversion's four-at-a-time steps end mid-pixel
