@@ -45,9 +45,10 @@ for target in fuzz_obj fuzz_ply fuzz_stl fuzz_gltf fuzz_scene fuzz_api; do
   work="$build/corpus/$name"
   rm -rf "$work"
   mkdir -p "$work"
-  echo "== $target: $runs inputs (seed $seed) from fuzz/corpus/$name"
+  echo "== $target: $runs inputs (seed $seed) from fuzz/corpus/$name (starts at ${SECONDS} s)"
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     "$build/fuzz/$target" -seed="$seed" -runs="$runs" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
     -max_len=4096 -print_final_stats=1 -artifact_prefix="$build/findings/$name-" \
     "$work" "fuzz/corpus/$name"
 done
+echo "== fuzz: build and all targets took ${SECONDS} s"
