@@ -5,7 +5,7 @@
 // before), and libspng's decoding against OpenImageIO's. Interleaved rounds,
 // medians; bench/run_startup.sh runs it and docs/startup.md quotes it.
 //
-//   bench_png_encode [--rounds N] [--survey] IMAGE.png...
+//   bench_png_encode [--rounds N] [--survey [--survey-filter none|sub|up|average|paeth]] IMAGE.png...
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -63,6 +63,15 @@ void write_with_openimageio(const std::string& path, const iod::PngPixels& pixel
     }
 }
 
+/// Whether the PNG's IHDR says 16-bit grey (bit depth at byte 24, colour type 0 at byte 25).
+bool is_16_bit_grey_png(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    unsigned char header[26] = {};
+    const bool read = file && std::fread(header, 1, sizeof header, file) == sizeof header;
+    if (file) std::fclose(file);
+    return read && header[24] == 16 && header[25] == 0;
+}
+
 struct Case {
     std::string name;
     std::function<void(const std::string& path)> write;
@@ -80,6 +89,7 @@ struct Variant {
 int main(int argc, char** argv) {
     int rounds = 9;
     bool survey = false;
+    std::string survey_filter;  // empty: all five
     std::vector<std::string> inputs;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
@@ -87,6 +97,8 @@ int main(int argc, char** argv) {
             rounds = std::stoi(argv[++i]);
         } else if (argument == "--survey") {
             survey = true;
+        } else if (argument == "--survey-filter" && i + 1 < argc) {
+            survey_filter = argv[++i];
         } else {
             inputs.push_back(argument);
         }
@@ -97,7 +109,7 @@ int main(int argc, char** argv) {
         const Image image = io::read_image(input);
         const std::size_t count = image.pixels.size();
         std::vector<std::uint8_t> rgb(count * 3), rgba(count * 4);
-        std::vector<std::uint16_t> rgb16(count * 3);
+        std::vector<std::uint16_t> rgb16(count * 3), grey16(count);
         for (std::size_t p = 0; p < count; ++p) {
             bool background = true;
             for (int c = 0; c < 3; ++c) {
@@ -106,11 +118,17 @@ int main(int argc, char** argv) {
                 background = background && rgb[3 * p + c] == 255;
             }
             rgba[4 * p + 3] = background ? 0 : 255;  // a transparent background, as --transparent writes
+            grey16[p] = iod::to_16_bit(image.pixels[p][0]);  // k / 65535 back to k
         }
         // The survey covers each variant too: the default's level differs for 8-bit and 16-bit samples.
-        const std::vector<Variant> variants = {{"RGB 8-bit", {rgb.data(), image.columns, image.rows, 3, 8}},
-                                               {"RGBA 8-bit", {rgba.data(), image.columns, image.rows, 4, 8}},
-                                               {"RGB 16-bit", {rgb16.data(), image.columns, image.rows, 3, 16}}};
+        // A 16-bit grey input (a dataset's NAME.depth.png, NAME.id.png) is
+        // encoded as itself; a colour render as 8-bit RGB and RGBA and as
+        // 16-bit RGB (what ImageWriteOptions::png_bit_depth = 16 writes).
+        const std::vector<Variant> variants =
+            is_16_bit_grey_png(input) ? std::vector<Variant>{{"grey 16-bit", {grey16.data(), image.columns, image.rows, 1, 16}}}
+                                      : std::vector<Variant>{{"RGB 8-bit", {rgb.data(), image.columns, image.rows, 3, 8}},
+                                                             {"RGBA 8-bit", {rgba.data(), image.columns, image.rows, 4, 8}},
+                                                             {"RGB 16-bit", {rgb16.data(), image.columns, image.rows, 3, 16}}};
         for (const Variant& variant : variants) {
             std::vector<Case> cases;
             cases.push_back({"OpenImageIO (before)", [&](const std::string& path) { write_with_openimageio(path, variant.pixels); }, {}, 0});
@@ -120,6 +138,7 @@ int main(int argc, char** argv) {
             if (survey) {
                 const char* filter_names[] = {"none", "sub", "up", "average", "paeth"};
                 for (int filter = 0; filter < 5; ++filter) {
+                    if (!survey_filter.empty() && survey_filter != filter_names[filter]) continue;
                     for (int level : {1, 2, 3, 4, 5, 6, 9, 12}) {
                         add("libdeflate " + std::to_string(level) + ", " + filter_names[filter],
                             {level, static_cast<iod::PngFilter>(filter)});

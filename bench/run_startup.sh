@@ -95,8 +95,13 @@ fi
 if [[ $sections == *" png "* ]]; then
 echo "PNG encoding ..." >&2
 "$phongrast" render assets/default.json --size 512x512 -q -o "$work/default512.png"
-"$phongrast" render "$work/knot10k.obj" --size 1024x768 -q -o "$work/knot1024x768.png"
-"$bench_png" --rounds "${PNG_ROUNDS:-15}" "$work/default512.png" "$work/knot1024x768.png"
+"$phongrast" render "$work/knot10k.obj" --size 1024x768 -q -o "$work/knot1024x768.png" \
+  --aov-files depth16,id --depth-scale 0.0004
+"$phongrast" render assets/default.json --size 1024x768 -q -o "$work/default1024x768.png" \
+  --aov-files depth16,id --depth-scale 0.0004
+# The 16-bit images a dataset writes (docs/datasets.md): depth in steps of 0.4 mm, triangle ids.
+"$bench_png" --rounds "${PNG_ROUNDS:-15}" "$work/default512.png" "$work/knot1024x768.png" \
+  "$work/knot1024x768.depth.png" "$work/knot1024x768.id.png" "$work/default1024x768.depth.png" "$work/default1024x768.id.png"
 echo
 fi
 

@@ -89,6 +89,26 @@ void filter_row(PngFilter filter, const std::uint8_t* row, const std::uint8_t* p
     }
 }
 
+/// The `up` filter of a row of 16-bit values, straight from the machine's
+/// words: one pass instead of a big-endian copy and a filter pass over it
+/// (the copy cost a quarter of the encoder's time at 16 bits). Each of the
+/// two bytes differs from the byte above on its own, as PNG's filters work
+/// byte by byte.
+void up_filter_words(const std::uint16_t* row, const std::uint16_t* previous, std::size_t count, std::uint8_t* out) {
+    *out++ = static_cast<std::uint8_t>(PngFilter::up);
+    if (!previous) {
+        for (std::size_t i = 0; i < count; ++i) {
+            out[2 * i] = static_cast<std::uint8_t>(row[i] >> 8);
+            out[2 * i + 1] = static_cast<std::uint8_t>(row[i]);
+        }
+        return;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        out[2 * i] = static_cast<std::uint8_t>((row[i] >> 8) - (previous[i] >> 8));
+        out[2 * i + 1] = static_cast<std::uint8_t>(row[i] - previous[i]);
+    }
+}
+
 struct CompressorDeleter {
     void operator()(libdeflate_compressor* compressor) const { libdeflate_free_compressor(compressor); }
 };
@@ -112,13 +132,14 @@ PngSettings png_settings(PngCompression compression) {
     // `up` is the best single filter on renders (flat backgrounds, smooth
     // shading) and costs one subtraction a byte. The default is the fastest
     // level within 10% of the size OpenImageIO's writer gave: 2 for 8-bit
-    // samples, 4 for 16-bit ones (at 2 they are 12-13% larger).
+    // samples, 3 for 16-bit ones (a dataset's depth and id images 0-7%
+    // larger, 16-bit colour 8-9%; at 2, colour is 12-13% larger).
     switch (compression) {
     case PngCompression::fast: return {1, PngFilter::up};
     case PngCompression::small: return {9, PngFilter::up};
     case PngCompression::standard: break;
     }
-    return {2, PngFilter::up, 4};
+    return {2, PngFilter::up, 3};
 }
 
 namespace {
@@ -169,8 +190,14 @@ std::size_t compress_rows(const PngPixels& pixels, PngSettings settings, Bytes*&
     thread_local std::vector<std::uint8_t> swapped[2];
     filtered.resize((row_size + 1) * rows);
     const std::uint8_t* previous = nullptr;
+    const bool words_up = bytes_per_value == 2 && settings.filter == PngFilter::up;
     for (std::size_t y = 0; y < rows; ++y) {
         const std::uint8_t* row = static_cast<const std::uint8_t*>(pixels.data) + y * row_size;
+        if (words_up) {
+            const auto* words = reinterpret_cast<const std::uint16_t*>(row);
+            up_filter_words(words, y > 0 ? words - row_size / 2 : nullptr, row_size / 2, &filtered[y * (row_size + 1)]);
+            continue;
+        }
         if (bytes_per_value == 2) {
             std::vector<std::uint8_t>& big_endian = swapped[y % 2];
             big_endian.resize(row_size);

@@ -102,21 +102,28 @@ TEST_CASE("8-bit RGB PNG decodes to the values OpenImageIO wrote before, at ever
     CHECK_THROWS_WITH(io::parse_png_compression("tiny"), Contains("fast, default or small"));
 }
 
-TEST_CASE("16-bit PNG decodes to round(v * 65535), clamped") {
+TEST_CASE("16-bit PNG decodes to round(v * 65535), clamped, at every compression") {
     TemporaryFolder folder;
     const Image image = awkward_image(9, 300);
     io::ImageWriteOptions options;
     options.png_bit_depth = 16;
     const std::string path = folder.file("deep.png");
-    io::write_image(image, path, options);
-    int rows = 0, columns = 0;
-    const auto words = decode_with_openimageio<std::uint16_t>(path, 3, OIIO::TypeDesc::UINT16, rows, columns);
-    for (std::size_t p = 0; p < image.pixels.size(); ++p) {
-        for (int c = 0; c < 3; ++c) {
-            const float v = image.pixels[p][c];
-            const std::uint16_t expected =
-                !(v > 0.0f) ? 0 : v >= 1.0f ? 65535 : static_cast<std::uint16_t>(std::lround(v * 65535.0f));
-            REQUIRE(words[3 * p + static_cast<std::size_t>(c)] == expected);
+    std::vector<std::uint16_t> words;
+    for (io::PngCompression compression : {io::PngCompression::fast, io::PngCompression::standard, io::PngCompression::small}) {
+        INFO(io::to_string(compression));
+        options.png_compression = compression;
+        io::write_image(image, path, options);
+        int rows = 0, columns = 0;
+        words = decode_with_openimageio<std::uint16_t>(path, 3, OIIO::TypeDesc::UINT16, rows, columns);
+        REQUIRE(rows == 9);
+        REQUIRE(columns == 300);
+        for (std::size_t p = 0; p < image.pixels.size(); ++p) {
+            for (int c = 0; c < 3; ++c) {
+                const float v = image.pixels[p][c];
+                const std::uint16_t expected =
+                    !(v > 0.0f) ? 0 : v >= 1.0f ? 65535 : static_cast<std::uint16_t>(std::lround(v * 65535.0f));
+                REQUIRE(words[3 * p + static_cast<std::size_t>(c)] == expected);
+            }
         }
     }
     // And read back by phongrast as k / 65535.
