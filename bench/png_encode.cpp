@@ -5,7 +5,7 @@
 // before), and libspng's decoding against OpenImageIO's. Interleaved rounds,
 // medians; bench/run_startup.sh runs it and docs/startup.md quotes it.
 //
-//   bench_png_encode [--rounds N] [--survey [--survey-filter none|sub|up|average|paeth]] IMAGE.png...
+//   bench_png_encode [--rounds N] [--survey [--survey-filter none|sub|up|average|paeth] | --survey-split] IMAGE.png...
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
     int rounds = 9;
     bool survey = false;
     std::string survey_filter;  // empty: all five
+    bool survey_split = false;  // the survey of split images: zlib's level for the first rows x libdeflate's for the rest
     std::vector<std::string> inputs;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
@@ -97,6 +98,8 @@ int main(int argc, char** argv) {
             rounds = std::stoi(argv[++i]);
         } else if (argument == "--survey") {
             survey = true;
+        } else if (argument == "--survey-split") {
+            survey_split = true;
         } else if (argument == "--survey-filter" && i + 1 < argc) {
             survey_filter = argv[++i];
         } else {
@@ -135,7 +138,14 @@ int main(int argc, char** argv) {
             const auto add = [&](const std::string& name, iod::PngSettings settings) {
                 cases.push_back({name, [=](const std::string& path) { iod::write_png(path, path, variant.pixels, settings); }, {}, 0});
             };
-            if (survey) {
+            if (survey_split) {
+                for (int level : {2, 3, 4}) {
+                    for (int head : {4, 5, 6}) {
+                        add("zlib " + std::to_string(head) + " + libdeflate " + std::to_string(level) + ", up",
+                            {level, iod::PngFilter::up, -1, head});
+                    }
+                }
+            } else if (survey) {
                 const char* filter_names[] = {"none", "sub", "up", "average", "paeth"};
                 for (int filter = 0; filter < 5; ++filter) {
                     if (!survey_filter.empty() && survey_filter != filter_names[filter]) continue;

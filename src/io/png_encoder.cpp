@@ -16,6 +16,8 @@
 
 #include <fcntl.h>
 #include <libdeflate.h>
+#include <tbb/task_group.h>
+#include <zlib.h>
 #include <sys/stat.h>
 #include <sys/uio.h>
 #include <unistd.h>
@@ -128,18 +130,20 @@ libdeflate_compressor& compressor_for(int level) {
 }  // namespace
 
 PngSettings png_settings(PngCompression compression) {
-    // Chosen with bench/png_encode.cpp on rendered images (docs/startup.md):
-    // `up` is the best single filter on renders (flat backgrounds, smooth
-    // shading) and costs one subtraction a byte. The default is the fastest
-    // level within 10% of the size OpenImageIO's writer gave: 2 for 8-bit
-    // samples, 3 for 16-bit ones (a dataset's depth and id images 0-7%
-    // larger, 16-bit colour 8-9%; at 2, colour is 12-13% larger).
+    // Chosen with bench/png_encode.cpp on rendered images and a dataset's
+    // depth and id images (docs/startup.md): `up` is the best single filter
+    // on them (flat backgrounds, smooth shading) and costs one subtraction a
+    // byte. The default keeps within 10% of the size OpenImageIO's writer
+    // gave: libdeflate level 2 for 8-bit samples, 4 for 16-bit ones (at 3 an
+    // id image came out 11% larger). A large image's first rows go to zlib
+    // (level 4, 16-bit 5; fast: 1), deflated while libdeflate deflates the
+    // rest. `small` stays one libdeflate stream.
     switch (compression) {
-    case PngCompression::fast: return {1, PngFilter::up};
+    case PngCompression::fast: return {1, PngFilter::up, -1, 1};
     case PngCompression::small: return {9, PngFilter::up};
     case PngCompression::standard: break;
     }
-    return {2, PngFilter::up, 3};
+    return {2, PngFilter::up, 4, 4, 5};
 }
 
 namespace {
@@ -170,9 +174,93 @@ struct UninitializedAllocator : std::allocator<T> {
 };
 using Bytes = std::vector<std::uint8_t, UninitializedAllocator<std::uint8_t>>;
 
+/// Rows [first, end) as PNG stores them (16-bit values big-endian), each
+/// filtered behind its type byte, into `filtered` at row `first`'s place.
+void filter_rows(const PngPixels& pixels, PngFilter filter, std::size_t first, std::size_t end, std::uint8_t* filtered) {
+    const std::size_t bytes_per_value = static_cast<std::size_t>(pixels.bit_depth / 8);
+    const std::size_t bpp = static_cast<std::size_t>(pixels.channels) * bytes_per_value;
+    const std::size_t row_size = static_cast<std::size_t>(pixels.columns) * bpp;
+    const auto* image = static_cast<const std::uint8_t*>(pixels.data);
+    if (bytes_per_value == 2 && filter == PngFilter::up) {
+        for (std::size_t y = first; y < end; ++y) {
+            const auto* words = reinterpret_cast<const std::uint16_t*>(image + y * row_size);
+            up_filter_words(words, y > 0 ? words - row_size / 2 : nullptr, row_size / 2, filtered + y * (row_size + 1));
+        }
+        return;
+    }
+    if (bytes_per_value == 1) {
+        for (std::size_t y = first; y < end; ++y) {
+            filter_row(filter, image + y * row_size, y > 0 ? image + (y - 1) * row_size : nullptr, row_size, bpp,
+                       filtered + y * (row_size + 1));
+        }
+        return;
+    }
+    // Other filters of 16-bit rows: each row copied big-endian first (two copies, the row above kept).
+    std::vector<std::uint8_t> swapped[2];
+    const std::uint8_t* previous = nullptr;
+    const auto big_endian_row = [&](std::size_t y, std::vector<std::uint8_t>& into) {
+        into.resize(row_size);
+        const auto* values = reinterpret_cast<const std::uint16_t*>(image + y * row_size);
+        for (std::size_t i = 0; i < row_size / 2; ++i) {
+            into[2 * i] = static_cast<std::uint8_t>(values[i] >> 8);
+            into[2 * i + 1] = static_cast<std::uint8_t>(values[i]);
+        }
+        return into.data();
+    };
+    if (first > 0) previous = big_endian_row(first - 1, swapped[(first - 1) % 2]);
+    for (std::size_t y = first; y < end; ++y) {
+        const std::uint8_t* row = big_endian_row(y, swapped[y % 2]);
+        filter_row(filter, row, previous, row_size, bpp, filtered + y * (row_size + 1));
+        previous = row;
+    }
+}
+
+struct ZStreamDeleter {
+    void operator()(z_stream* stream) const {
+        deflateEnd(stream);
+        delete stream;
+    }
+};
+
+/// The first piece of a split image: raw deflate by zlib, ended by a sync
+/// flush (an empty stored block: byte-aligned, not final) so that
+/// libdeflate's piece can follow it in the same stream. zlib's state is
+/// kept per thread and level (about 270 KB), reset for each image.
+std::size_t deflate_head(const std::uint8_t* in, std::size_t size, int level, Bytes& out) {
+    thread_local std::array<std::unique_ptr<z_stream, ZStreamDeleter>, 10> streams;
+    auto& stream = streams.at(static_cast<std::size_t>(level));
+    if (!stream) {
+        auto fresh = std::make_unique<z_stream>();
+        // windowBits -15: raw deflate, no zlib header or trailer (written around both pieces).
+        if (deflateInit2(fresh.get(), level, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) throw std::bad_alloc();
+        stream.reset(fresh.release());
+    } else if (deflateReset(stream.get()) != Z_OK) {
+        throw std::runtime_error("PNG: zlib could not reset");
+    }
+    if (size > UINT32_MAX / 2) throw std::invalid_argument("PNG: image too large to split");
+    out.resize(deflateBound(stream.get(), static_cast<uLong>(size)) + 16);  // + the sync flush's empty block
+    stream->next_in = const_cast<Bytef*>(in);
+    stream->avail_in = static_cast<uInt>(size);
+    stream->next_out = out.data();
+    stream->avail_out = static_cast<uInt>(out.size());
+    if (deflate(stream.get(), Z_SYNC_FLUSH) != Z_OK || stream->avail_in != 0) {
+        throw std::runtime_error("PNG: zlib's deflate failed");
+    }
+    return out.size() - stream->avail_out;
+}
+
 /// The zlib stream of the filtered rows, in a buffer kept per thread: a batch
 /// writes image after image, and fresh megabyte buffers cost more in page
 /// faults and zero-filling than the encoding itself. Returns its size.
+///
+/// An image of at least kSplitBytes filtered bytes (with a head level set) is
+/// deflated in two pieces, at once on two threads when allowed: its first
+/// kHeadRowsEighths of the rows by zlib (deflate_head), the rest by
+/// libdeflate as the final piece, with no reference back into the first (it
+/// has no dictionary input: a few bytes lost at one boundary). The stream is
+/// the zlib header, both pieces and the Adler-32 of all the filtered bytes.
+/// The split depends only on the image's size, so the file's bytes do not
+/// depend on the threads.
 std::size_t compress_rows(const PngPixels& pixels, PngSettings settings, Bytes*& out) {
     if (pixels.columns < 1 || pixels.rows < 1) throw std::invalid_argument("PNG: the image is empty");
     if (pixels.channels < 1 || pixels.channels > 4) throw std::invalid_argument("PNG: 1 to 4 channels");
@@ -180,45 +268,75 @@ std::size_t compress_rows(const PngPixels& pixels, PngSettings settings, Bytes*&
     const std::size_t bytes_per_value = static_cast<std::size_t>(pixels.bit_depth / 8);
     const int level = bytes_per_value == 2 && settings.level_16_bit >= 0 ? settings.level_16_bit : settings.level;
     if (level < 0 || level > 12) throw std::invalid_argument("PNG: deflate level 0 to 12");
-    const std::size_t bpp = static_cast<std::size_t>(pixels.channels) * bytes_per_value;
-    const std::size_t row_size = static_cast<std::size_t>(pixels.columns) * bpp;
+    const int head_level =
+        bytes_per_value == 2 && settings.head_zlib_level_16_bit >= 0 ? settings.head_zlib_level_16_bit : settings.head_zlib_level;
+    if (head_level < 0 || head_level > 9) throw std::invalid_argument("PNG: zlib level 0 to 9");
+    const std::size_t row_size = static_cast<std::size_t>(pixels.columns) * static_cast<std::size_t>(pixels.channels) * bytes_per_value;
     const std::size_t rows = static_cast<std::size_t>(pixels.rows);
 
-    // The rows as PNG stores them (16-bit values big-endian), each filtered behind its type byte.
     thread_local Bytes filtered;
     thread_local Bytes compressed;
-    thread_local std::vector<std::uint8_t> swapped[2];
     filtered.resize((row_size + 1) * rows);
-    const std::uint8_t* previous = nullptr;
-    const bool words_up = bytes_per_value == 2 && settings.filter == PngFilter::up;
-    for (std::size_t y = 0; y < rows; ++y) {
-        const std::uint8_t* row = static_cast<const std::uint8_t*>(pixels.data) + y * row_size;
-        if (words_up) {
-            const auto* words = reinterpret_cast<const std::uint16_t*>(row);
-            up_filter_words(words, y > 0 ? words - row_size / 2 : nullptr, row_size / 2, &filtered[y * (row_size + 1)]);
-            continue;
-        }
-        if (bytes_per_value == 2) {
-            std::vector<std::uint8_t>& big_endian = swapped[y % 2];
-            big_endian.resize(row_size);
-            const std::uint16_t* values = reinterpret_cast<const std::uint16_t*>(row);
-            for (std::size_t i = 0; i < row_size / 2; ++i) {
-                big_endian[2 * i] = static_cast<std::uint8_t>(values[i] >> 8);
-                big_endian[2 * i + 1] = static_cast<std::uint8_t>(values[i]);
-            }
-            row = big_endian.data();
-        }
-        filter_row(settings.filter, row, previous, row_size, bpp, &filtered[y * (row_size + 1)]);
-        previous = row;
+    const std::size_t head_rows =
+        head_level > 0 && filtered.size() >= kSplitBytes && rows >= 8 ? rows * kHeadRowsEighths / 8 : 0;
+    if (head_rows == 0) {
+        filter_rows(pixels, settings.filter, 0, rows, filtered.data());
+        libdeflate_compressor& compressor = compressor_for(level);
+        compressed.resize(libdeflate_zlib_compress_bound(&compressor, filtered.size()));
+        const std::size_t compressed_size =
+            libdeflate_zlib_compress(&compressor, filtered.data(), filtered.size(), compressed.data(), compressed.size());
+        if (compressed_size == 0) throw std::runtime_error("PNG: deflate failed");
+        out = &compressed;
+        return compressed_size;
     }
 
-    libdeflate_compressor& compressor = compressor_for(level);
-    compressed.resize(libdeflate_zlib_compress_bound(&compressor, filtered.size()));
-    const std::size_t compressed_size =
-        libdeflate_zlib_compress(&compressor, filtered.data(), filtered.size(), compressed.data(), compressed.size());
-    if (compressed_size == 0) throw std::runtime_error("PNG: deflate failed");
+    const std::size_t head_size = head_rows * (row_size + 1);
+    const std::size_t tail_size = filtered.size() - head_size;
+    thread_local Bytes head;
+    thread_local Bytes tail;
+    // The lambdas name this thread's buffers through these references: a
+    // thread_local named inside a lambda that runs on another thread would be
+    // that thread's own.
+    std::uint8_t* const filtered_rows = filtered.data();
+    Bytes& head_out = head;
+    Bytes& tail_out = tail;
+    std::size_t head_deflated = 0, tail_deflated = 0;
+    std::uint32_t head_adler = 1, tail_adler = 1;
+    // Each piece filters its own rows (the row above the tail's first is the image's, not filtered).
+    const auto deflate_first_rows = [&] {
+        filter_rows(pixels, settings.filter, 0, head_rows, filtered_rows);
+        head_adler = libdeflate_adler32(1, filtered_rows, head_size);
+        head_deflated = deflate_head(filtered_rows, head_size, head_level, head_out);
+    };
+    const auto deflate_last_rows = [&] {
+        filter_rows(pixels, settings.filter, head_rows, rows, filtered_rows);
+        const std::uint8_t* in = filtered_rows + head_size;
+        tail_adler = libdeflate_adler32(1, in, tail_size);
+        libdeflate_compressor& compressor = compressor_for(level);
+        tail_out.resize(libdeflate_deflate_compress_bound(&compressor, tail_size));
+        tail_deflated = libdeflate_deflate_compress(&compressor, in, tail_size, tail_out.data(), tail_out.size());
+        if (tail_deflated == 0) throw std::runtime_error("PNG: deflate failed");
+    };
+    if (settings.concurrent) {
+        tbb::task_group both;
+        both.run(deflate_first_rows);
+        deflate_last_rows();
+        both.wait();
+    } else {
+        deflate_first_rows();
+        deflate_last_rows();
+    }
+    // zlib header: deflate with a 32 KB window, default-level flag, (0x78 << 8 | 0x9c) % 31 == 0.
+    compressed.resize(2 + head_deflated + tail_deflated + 4);
+    compressed[0] = 0x78;
+    compressed[1] = 0x9c;
+    std::memcpy(compressed.data() + 2, head.data(), head_deflated);
+    std::memcpy(compressed.data() + 2 + head_deflated, tail.data(), tail_deflated);
+    const auto adler = static_cast<std::uint32_t>(adler32_combine(head_adler, tail_adler, static_cast<z_off_t>(tail_size)));
+    std::uint8_t* trailer = compressed.data() + 2 + head_deflated + tail_deflated;
+    for (int i = 0; i < 4; ++i) trailer[i] = static_cast<std::uint8_t>(adler >> (24 - 8 * i));
     out = &compressed;
-    return compressed_size;
+    return compressed.size();
 }
 
 /// Everything before the image data: the signature and the IHDR chunk.

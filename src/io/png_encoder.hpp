@@ -32,7 +32,24 @@ struct PngSettings {
     PngFilter filter;
     /// The level for 16-bit samples, whose low bytes compress worse (-1: `level`).
     int level_16_bit = -1;
+    /// zlib's level for the first rows of a large image, deflated beside
+    /// libdeflate's for the rest (0: the whole image in one libdeflate call).
+    /// libdeflate cannot end a piece without ending the stream; zlib can.
+    int head_zlib_level = 0;
+    /// The same for 16-bit samples (-1: `head_zlib_level`).
+    int head_zlib_level_16_bit = -1;
+    /// Whether the two pieces of such an image may be deflated at once on
+    /// two threads (oneTBB's); the file's bytes are the same either way.
+    bool concurrent = true;
 };
+
+/// The share of a large image's rows deflated by zlib: zlib at level 4
+/// costs about 1.6x libdeflate's time per byte at 2-4 (bench_png_encode
+/// --survey-split), so both pieces take about as long at 3/8 and 5/8.
+constexpr int kHeadRowsEighths = 3;
+/// Images with fewer filtered bytes than this are deflated in one piece: below
+/// it the second thread's start costs more than it saves.
+constexpr std::size_t kSplitBytes = std::size_t{1} << 20;
 PngSettings png_settings(PngCompression compression);
 
 /// The complete PNG file: signature, IHDR, IDAT chunks, IEND.
