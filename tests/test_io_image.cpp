@@ -188,7 +188,7 @@ TEST_CASE("16-bit PNGs decode to the words written, with each of the five row fi
 }
 
 TEST_CASE("a large PNG is deflated in two pieces that decode as one stream, the same bytes on one thread or two") {
-    // zlib deflates the first 3/8 of the rows (ended by a sync flush),
+    // zlib deflates the first third or so of the rows (ended by a sync flush),
     // libdeflate the rest; libspng checks the stream and its Adler-32.
     TemporaryFolder folder;
     for (const int bit_depth : {8, 16}) {

@@ -255,7 +255,7 @@ std::size_t deflate_head(const std::uint8_t* in, std::size_t size, int level, By
 ///
 /// An image of at least kSplitBytes filtered bytes (with a head level set) is
 /// deflated in two pieces, at once on two threads when allowed: its first
-/// kHeadRowsEighths of the rows by zlib (deflate_head), the rest by
+/// head_rows_per_mille() of the rows by zlib (deflate_head), the rest by
 /// libdeflate as the final piece, with no reference back into the first (it
 /// has no dictionary input: a few bytes lost at one boundary). The stream is
 /// the zlib header, both pieces and the Adler-32 of all the filtered bytes.
@@ -278,7 +278,9 @@ std::size_t compress_rows(const PngPixels& pixels, PngSettings settings, Bytes*&
     thread_local Bytes compressed;
     filtered.resize((row_size + 1) * rows);
     const std::size_t head_rows =
-        head_level > 0 && filtered.size() >= kSplitBytes && rows >= 8 ? rows * kHeadRowsEighths / 8 : 0;
+        head_level > 0 && filtered.size() >= kSplitBytes && rows >= 8
+            ? rows * static_cast<std::size_t>(head_rows_per_mille(head_level)) / 1000
+            : 0;
     if (head_rows == 0) {
         filter_rows(pixels, settings.filter, 0, rows, filtered.data());
         libdeflate_compressor& compressor = compressor_for(level);

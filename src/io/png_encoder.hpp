@@ -43,10 +43,11 @@ struct PngSettings {
     bool concurrent = true;
 };
 
-/// The share of a large image's rows deflated by zlib: zlib at level 4
-/// costs about 1.6x libdeflate's time per byte at 2-4 (bench_png_encode
-/// --survey-split), so both pieces take about as long at 3/8 and 5/8.
-constexpr int kHeadRowsEighths = 3;
+/// The share of a large image's rows deflated by zlib, in thousandths, for
+/// zlib's `level`: both pieces should take about as long. zlib at level 4
+/// costs about 1.6x libdeflate's time per byte at 2-4, at 5 about 2x
+/// (bench_png_encode --survey-split): 3/8 and 1/3 of the rows.
+constexpr int head_rows_per_mille(int level) { return level >= 5 ? 333 : 375; }
 /// Images with fewer filtered bytes than this are deflated in one piece: below
 /// it the second thread's start costs more than it saves.
 constexpr std::size_t kSplitBytes = std::size_t{1} << 20;
