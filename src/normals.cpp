@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -183,6 +184,26 @@ bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, cons
     });
     if (poll) poll();
     return true;
+}
+
+bool ComputedNormalsSource::matches(const Mesh& mesh) const {
+    // Bytes, not values: -0.0 against 0.0 or a NaN payload recomputes, which is
+    // never wrong; equal bytes give calculate_normals_into() equal inputs.
+    return valid && positions.size() == mesh.positions.size() && triangles.size() == mesh.triangles.size() &&
+           std::memcmp(positions.data(), mesh.positions.data(), positions.size() * sizeof(glm::dvec3)) == 0 &&
+           std::memcmp(triangles.data(), mesh.triangles.data(), triangles.size() * sizeof(Triangle)) == 0;
+}
+
+void ComputedNormalsSource::remember(const Mesh& mesh) {
+    valid = false;
+    if (mesh.triangles.size() > kReusedNormalsMaxTriangles) {
+        std::vector<glm::dvec3>().swap(positions);
+        std::vector<Triangle>().swap(triangles);
+        return;
+    }
+    positions.assign(mesh.positions.begin(), mesh.positions.end());
+    triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
+    valid = true;
 }
 
 bool has_zero_normal(const std::vector<glm::vec3>& normals) {

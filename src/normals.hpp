@@ -55,6 +55,27 @@ bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, cons
                                   const VertexCorners& corners, NormalsScratch& scratch,
                                   std::vector<glm::vec3>& normals, const std::function<void()>& poll = nullptr);
 
+/// The positions and triangles a frame's computed normals were made from, so
+/// that the next frame of the same mesh reuses them: a Renderer's frames,
+/// and render()'s and render_object()'s calls, which keep their memory, on a
+/// mesh without normals. Compared in full every frame, not by address: a
+/// mesh edited in place, or another mesh at the same address, is computed
+/// anew. Meshes of at most kReusedNormalsMaxTriangles triangles only (the
+/// copy costs 24 bytes per vertex and 12 per triangle).
+struct ComputedNormalsSource {
+    std::vector<glm::dvec3> positions;
+    std::vector<Triangle> triangles;
+    bool valid = false;
+
+    /// Whether normals computed from `mesh` now would be the remembered ones:
+    /// the same positions and triangles, bit for bit.
+    bool matches(const Mesh& mesh) const;
+    /// Remembers `mesh` as the source of the normals just computed (or
+    /// nothing, for a mesh over the limit).
+    void remember(const Mesh& mesh);
+};
+constexpr std::size_t kReusedNormalsMaxTriangles = std::size_t{1} << 18;
+
 /// Whether some user normal (Mesh::normals) is exactly zero: "no normal here".
 bool has_zero_normal(const std::vector<glm::vec3>& normals);
 /// computed[i] = given[i] wherever given[i] is not zero: a zero user normal

@@ -69,9 +69,18 @@ void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, V
     const bool fill_in = need_normals && !mesh.normals.empty() && has_zero_normal(mesh.normals);
     if (need_normals && (mesh.normals.empty() || fill_in)) {
         progress.begin_stage(0.0, 0.05, 1);
-        calculate_normals_into(mesh.positions, mesh.triangles, memory.normals_scratch, memory.normals,
-                               progress.poll_function());
-        if (fill_in) keep_given_normals(mesh.normals, memory.normals);
+        // The previous frame's normals when they were computed, not filled in,
+        // from the same positions and triangles (ComputedNormalsSource).
+        if (fill_in || !memory.normals_source.matches(mesh)) {
+            memory.normals_source.valid = false;  // until computed whole (a cancel stops it halfway)
+            calculate_normals_into(mesh.positions, mesh.triangles, memory.normals_scratch, memory.normals,
+                                   progress.poll_function());
+            if (fill_in) {
+                keep_given_normals(mesh.normals, memory.normals);
+            } else {
+                memory.normals_source.remember(mesh);
+            }
+        }
     }
     const std::vector<glm::vec3>& normals = mesh.normals.empty() || fill_in ? memory.normals : mesh.normals;
     resize_polling(out.screen, count, progress.poll_function());

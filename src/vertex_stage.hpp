@@ -47,6 +47,7 @@ template <typename Real>
 struct VertexStageMemory {
     NormalsScratch normals_scratch;
     std::vector<glm::vec3> normals;  ///< calculated when the mesh has none
+    ComputedNormalsSource normals_source;  ///< the mesh `normals` were calculated from, while valid
     std::vector<LightVectorsAt<Real>> block_vectors;  ///< one per block of vertices lit
 };
 

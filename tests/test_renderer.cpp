@@ -223,6 +223,50 @@ TEST_CASE("render() forgets the scene between calls: a mesh changed in place at 
     check_same_render_stats(after.stats, fresh.stats);
 }
 
+TEST_CASE("computed normals are reused only while the mesh's positions and triangles are unchanged") {
+    // A mesh without normals: the vertex stage computes them, and keeps them
+    // for the next frame of the same positions and triangles (compared in
+    // full). Each edit in place (same sizes and addresses) changes the
+    // normals; every frame must be what a fresh render of the mesh as it is
+    // now paints, in a Renderer and through render()'s kept memory.
+    Scene scene = sphere(14, 60, 60, Shader::phong, false);
+    REQUIRE(scene.mesh.normals.empty());
+    Renderer renderer(RenderOptions::exact());
+    const auto fresh = [&scene] {
+        release_render_memory();
+        const RenderResult result = render(scene);
+        release_render_memory();
+        return result;
+    };
+    const auto check_frames = [&](const char* what) {
+        INFO(what);
+        const RenderResult expected = fresh();
+        (void)render(scene);  // kept memory holds this mesh's normals for the next call
+        CHECK(test_render_modes::same_bits(render(scene).image, expected.image));
+        CHECK(test_render_modes::same_bits(renderer.render(scene).image, expected.image));
+        CHECK(test_render_modes::same_bits(renderer.render(scene).image, expected.image));
+        return expected;
+    };
+    const RenderResult first = check_frames("as made");
+    // The vertex facing the eye most squarely: its neighbourhood is in view.
+    const glm::dvec3 towards_eye = glm::normalize(scene.camera.eye);
+    std::uint32_t facing = 0;
+    for (std::uint32_t v = 0; v < scene.mesh.positions.size(); ++v) {
+        if (glm::dot(scene.mesh.positions[v], towards_eye) > glm::dot(scene.mesh.positions[facing], towards_eye)) facing = v;
+    }
+    // Moved outwards: its neighbours' normals turn.
+    scene.mesh.positions[facing] *= 1.2;
+    const RenderResult moved = check_frames("a vertex moved");
+    CHECK_FALSE(test_render_modes::same_bits(moved.image, first.image));
+    // The triangles around it wound the other way: the positions stay, their
+    // faces (and so the normals they sum into) turn round.
+    for (Triangle& triangle : scene.mesh.triangles) {
+        if (triangle[0] == facing || triangle[1] == facing || triangle[2] == facing) std::swap(triangle[1], triangle[2]);
+    }
+    const RenderResult rewound = check_frames("triangles wound the other way");
+    CHECK_FALSE(test_render_modes::same_bits(rewound.image, moved.image));
+}
+
 TEST_CASE("render() from a progress callback gets its own memory, and a failed call leaves none behind") {
     const Scene outer = sphere(20, 60, 60, Shader::phong, false);
     const Scene inner = sphere(9, 30, 40, Shader::gouraud, true);
