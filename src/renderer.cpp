@@ -187,13 +187,20 @@ bool keeps_memory(const Scene& scene, const RenderOptions& options) {
 
 }  // namespace
 
-RenderResult render(const Scene& scene, const RenderOptions& options) {
+namespace {
+
+/// render()'s work, handing the frame's result to `deliver` while the
+/// thread's state (or a fresh one, for a large frame or a nested call) still
+/// holds it: `kept` says whether the state stays for the next call.
+template <typename Deliver>
+void render_one_off(const Scene& scene, const RenderOptions& options, Deliver&& deliver) {
     OneOffMemory& warm = t_one_off;
     if (warm.busy || !keeps_memory(scene, options)) {
         detail::RendererState state;
         state.options = options;
         state.render(scene, true);
-        return std::move(state.result);
+        deliver(state.result, false);
+        return;
     }
     warm.busy = true;
     struct Release {
@@ -211,13 +218,41 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         warm.state.reset();  // a failed or cancelled frame: start the next call afresh
         throw;
     }
-    // A copy: the state keeps its image (and extra outputs) for the next call.
-    // Moving it out would make the next call grow a new image, mapping and
-    // zeroing its pages (about 0.5 ms at 512x512 here) where a copy costs a
-    // memcpy into memory malloc has usually just had back from the caller.
-    RenderResult result = state.result;
+    deliver(state.result, true);
     state.options = RenderOptions{};  // drops the caller's progress callback and what it holds
+}
+
+}  // namespace
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    RenderResult result;
+    render_one_off(scene, options, [&result](RenderResult& made, bool kept) {
+        // A copy when the state stays: it keeps its image (and extra outputs)
+        // for the next call. Moving it out would make the next call grow a
+        // new image, mapping and zeroing its pages (about 0.5 ms at 512x512
+        // here) where a copy costs a memcpy into memory malloc has usually
+        // just had back from the caller.
+        if (kept) {
+            result = made;
+        } else {
+            result = std::move(made);
+        }
+    });
     return result;
+}
+
+void render(const Scene& scene, const RenderOptions& options, RenderResult& out) {
+    render_one_off(scene, options, [&out](RenderResult& made, bool kept) {
+        if (!kept) {
+            out = std::move(made);
+            return;
+        }
+        // The caller's old image becomes the state's working image (the next
+        // frame resizes and overwrites it); the frame's image goes out as it is.
+        std::swap(out.image, made.image);
+        out.stats = made.stats;
+        out.aovs = made.aovs;
+    });
 }
 
 void release_render_memory() { t_one_off.state.reset(); }

@@ -267,6 +267,42 @@ TEST_CASE("computed normals are reused only while the mesh's positions and trian
     CHECK_FALSE(test_render_modes::same_bits(rewound.image, moved.image));
 }
 
+TEST_CASE("render(scene, options, out) paints render()'s picture, its image traded for out's old one, not copied") {
+    const Scene scene = sphere(16, 64, 80, Shader::phong, false);
+    const RenderOptions options = RenderOptions::exact();
+    release_render_memory();
+    const RenderResult expected = render(scene, options);
+    RenderResult out;
+    out.image = Image(3, 5, glm::vec3(7.0f));  // another size and contents: overwritten
+    render(scene, options, out);
+    CHECK(test_render_modes::same_bits(out.image, expected.image));
+    check_same_render_stats(out.stats, expected.stats);
+    // Call after call the two buffers trade places: the image handed out is
+    // the one the frame was drawn in, never a copy.
+    const glm::vec3* first = out.image.pixels.data();
+    render(scene, options, out);
+    const glm::vec3* second = out.image.pixels.data();
+    render(scene, options, out);
+    CHECK(second != first);
+    CHECK(out.image.pixels.data() == first);
+    CHECK(test_render_modes::same_bits(out.image, expected.image));
+    // Extra outputs come with it; another scene draws what render() draws.
+    RenderOptions with_depth = options;
+    with_depth.aovs.depth = true;
+    const Scene other = sphere(10, 40, 30, Shader::gouraud, true);
+    render(other, with_depth, out);
+    const RenderResult other_expected = render(other, with_depth);
+    CHECK(test_render_modes::same_bits(out.image, other_expected.image));
+    CHECK(out.aovs.depth == other_expected.aovs.depth);
+    // A frame too large to keep (over 2048 x 2048 samples) is moved out whole.
+    RenderOptions supersampled = options;
+    supersampled.samples_per_axis = 3;
+    const Scene large = sphere(8, 700, 700, Shader::flat, false);
+    render(large, supersampled, out);
+    CHECK(test_render_modes::same_bits(out.image, render(large, supersampled).image));
+    release_render_memory();
+}
+
 TEST_CASE("render() from a progress callback gets its own memory, and a failed call leaves none behind") {
     const Scene outer = sphere(20, 60, 60, Shader::phong, false);
     const Scene inner = sphere(9, 30, 40, Shader::gouraud, true);

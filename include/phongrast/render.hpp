@@ -252,10 +252,20 @@ struct RenderResult {
 /// Each thread keeps the working memory of its last render() call for its
 /// next one when the frame is small (at most 262,144 triangles and
 /// 2048 x 2048 samples), so a series of one-off calls does not fault in
-/// fresh memory every time; only the memory: nothing about the scene is
-/// remembered, and the picture is the one a fresh call draws. Larger frames
-/// release their memory as they return (a Renderer keeps any size).
+/// fresh memory every time. What stays never changes the picture, which is
+/// the one a fresh call draws: the memory, and normals computed for a mesh
+/// without any, reused only while its positions and triangles are the same
+/// bytes. Larger frames release their memory as they return (a Renderer
+/// keeps any size). The image returned is a copy of the kept one.
 RenderResult render(const Scene& scene, const RenderOptions& options = RenderOptions::exact());
+
+/// render() into `out`, the image without a copy: out.image's memory and the
+/// thread's kept image trade places, so a loop that passes the same
+/// RenderResult call after call renders with no copy of its image and no
+/// fresh pages (what out.image held before does not matter: its size and
+/// contents are overwritten). The picture, statistics and extra outputs are
+/// render()'s.
+void render(const Scene& scene, const RenderOptions& options, RenderResult& out);
 
 /// Frees the memory render() keeps for the calling thread (it is freed
 /// anyway when the thread ends).

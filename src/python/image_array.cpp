@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <mutex>
 
 namespace phongrast::python {
 
@@ -24,6 +25,49 @@ py::array image_to_array(Image&& image) {
     const py::ssize_t columns = owned->columns;
     float* data = reinterpret_cast<float*>(owned->pixels.data());
     const py::capsule owner = owning_capsule(std::move(owned));
+    const auto item = static_cast<py::ssize_t>(sizeof(float));
+    return py::array_t<float>({rows, columns, py::ssize_t{3}}, {columns * 3 * item, 3 * item, item}, data, owner);
+}
+
+namespace {
+
+/// Buffers of freed rendered images, waiting for the next render call.
+/// Created once and never destroyed: arrays may be freed while the
+/// interpreter shuts down, after static objects' destructors have run.
+struct RecycledImages {
+    std::mutex lock;
+    std::vector<Image> spare;
+};
+RecycledImages& recycled_images() {
+    static RecycledImages* const images = new RecycledImages;
+    return *images;
+}
+constexpr std::size_t kSpareImages = 2;  // the array being replaced and the one replacing it
+constexpr std::size_t kSpareImageBytes = std::size_t{64} << 20;
+
+}  // namespace
+
+Image take_recycled_image() {
+    RecycledImages& images = recycled_images();
+    const std::lock_guard<std::mutex> hold(images.lock);
+    if (images.spare.empty()) return Image();
+    Image image = std::move(images.spare.back());
+    images.spare.pop_back();
+    return image;
+}
+
+py::array image_to_recycling_array(Image&& image) {
+    auto owned = std::make_unique<Image>(std::move(image));
+    const py::ssize_t rows = owned->rows;
+    const py::ssize_t columns = owned->columns;
+    float* data = reinterpret_cast<float*>(owned->pixels.data());
+    const py::capsule owner(owned.release(), [](void* pointer) {
+        std::unique_ptr<Image> freed(static_cast<Image*>(pointer));
+        if (freed->pixels.capacity() * sizeof(glm::vec3) > kSpareImageBytes) return;
+        RecycledImages& images = recycled_images();
+        const std::lock_guard<std::mutex> hold(images.lock);
+        if (images.spare.size() < kSpareImages) images.spare.push_back(std::move(*freed));
+    });
     const auto item = static_cast<py::ssize_t>(sizeof(float));
     return py::array_t<float>({rows, columns, py::ssize_t{3}}, {columns * 3 * item, 3 * item, item}, data, owner);
 }

@@ -18,6 +18,16 @@ namespace py = pybind11;
 /// An M x N x 3 float32 array that takes over the image's pixel buffer: no copy,
 /// and the buffer is freed when the last array (or view) using it goes away.
 py::array image_to_array(Image&& image);
+/// A one-off render call's image memory: the buffer of a rendered image whose
+/// arrays are all gone (image_to_recycling_array()), or an empty one. A
+/// render call hands it to phongrast::render(scene, options, out) as the
+/// thread's next working image, so that a loop of calls (`img =
+/// render_object(...)`, the previous array freed as `img` is rebound)
+/// renders with no copy of its image and no fresh pages.
+Image take_recycled_image();
+/// image_to_array() whose buffer, when its last array goes away, is kept
+/// for take_recycled_image() (two buffers at most, none over 64 MiB).
+py::array image_to_recycling_array(Image&& image);
 /// An Nv x 3 array that takes over `values` (float32 for vec3, float64 for dvec3).
 py::array points_to_array(std::vector<glm::vec3>&& values);
 /// Copies an M x N x 3 array into an Image (for writing files): uint8 values

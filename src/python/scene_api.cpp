@@ -231,17 +231,19 @@ PyScene scene_from_dict(py::dict description, const std::string& folder) {
 py::tuple render_with_stats(const PyScene& scene, RenderOptions options, py::object progress_callable) {
     const std::shared_ptr<const Scene> keep = scene.scene;
     RenderResult result;
+    result.image = take_recycled_image();  // becomes the thread's working image: no copy of this call's
     PythonProgress progress(std::move(progress_callable));  // Ctrl-C and `progress` (interrupts.hpp)
     options.progress = progress.callback();
     progress.run([&] {
         py::gil_scoped_release release;
-        result = render(*keep, options);
+        render(*keep, options, result);
     });
     py::dict stats = stats_to_dict(result.stats);
     if (options.aovs.any()) {
-        return py::make_tuple(image_to_array(std::move(result.image)), stats, aovs_to_dict(std::move(result.aovs)));
+        return py::make_tuple(image_to_recycling_array(std::move(result.image)), stats,
+                              aovs_to_dict(std::move(result.aovs)));
     }
-    return py::make_tuple(image_to_array(std::move(result.image)), stats);
+    return py::make_tuple(image_to_recycling_array(std::move(result.image)), stats);
 }
 
 /// Wall times of `repeats` calls of `call`, timed in C++ (for bench/python_overhead.py's baseline).

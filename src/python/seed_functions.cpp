@@ -76,13 +76,14 @@ py::array render_object(const py::object& shader, const py::object& focal, const
         throw py::value_error(seed_names(error.what()));
     }
     RenderResult result;
+    result.image = take_recycled_image();  // becomes the thread's working image: no copy of this call's
     PythonProgress progress(progress_keyword(keywords));  // Ctrl-C and `progress` (interrupts.hpp)
     options.progress = progress.callback();
     progress.run([&] {
         py::gil_scoped_release release;
-        result = render(scene, options);
+        render(scene, options, result);
     });
-    return image_to_array(std::move(result.image));
+    return image_to_recycling_array(std::move(result.image));
 }
 
 py::array light_at_point(const py::object& point, const py::object& normal, const py::object& vcolor, const py::object& cam_pos, const py::object& mat,

@@ -76,3 +76,25 @@ def test_threads_each_keep_their_own_memory():
     for (order, index), image in results.items():
         assert_same_bits(image, expected[index])
     assert len(results) == 2 * len(expected)
+
+
+def test_images_still_referenced_are_never_rendered_into():
+    """A freed image's memory becomes the next call's working image (no copy
+    of the picture on return); one still referenced, or viewed, must keep
+    its pixels whatever is rendered after it."""
+    scene = SeedScene(M=64, N=48)
+    phongrast.release_render_memory()
+    first = scene.render("phong", mode="exact")
+    first_pixels = first.copy()
+    view = first[10:20]
+    second = scene.render("gouraud", mode="seed")
+    second_pixels = second.copy()
+    del first  # the view still holds its memory
+    for shader in ["flat", "phong", "gouraud", "phong"]:
+        latest = scene.render(shader, mode="exact")  # rebinding frees the previous one for the next call
+        scene_image, _ = phongrast.render(phongrast.Scene.from_mesh(phongrast.Mesh(*[a.T for a in bumpy_sphere()[::2]]), 30, 20))
+    assert_same_bits(view, first_pixels[10:20])
+    assert_same_bits(second, second_pixels)
+    phongrast.release_render_memory()
+    assert_same_bits(latest, scene.render("phong", mode="exact"))
+    assert scene_image.shape == (30, 20, 3)
