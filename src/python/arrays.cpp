@@ -5,6 +5,7 @@
 #include <cstring>
 #include <initializer_list>
 #include <stdexcept>
+#include <type_traits>
 
 namespace phongrast::python {
 namespace {
@@ -88,15 +89,16 @@ PointAxes point_axes(const py::array& array, const std::string& name, SquareLayo
 }
 
 /// Converts the components and notes, without a branch per value, whether all are finite
-/// (x - x is 0 for a finite x and NaN otherwise); the slow search for the culprit runs only on failure.
+/// (x - x is 0 for a finite x and NaN otherwise, and a NaN stays in a sum); the slow search
+/// for the culprit runs only on failure. The packed path keeps four independent sums so the
+/// check does not serialise the loop (a single running `&=` cost 1.6 ns a value: render_object's
+/// arrays are read on every call).
 template <typename Source, typename Point>
 void copy_points(const py::array& array, const PointAxes& axes, const std::string& name,
                  std::vector<Point>& out) {
     using Component = typename Point::value_type;
     static_assert(sizeof(Point) == 3 * sizeof(Component), "points must be three packed components");
     const auto* base = static_cast<const char*>(array.data());
-    out.resize(axes.count);
-    auto* target = reinterpret_cast<Component*>(out.data());
     const auto read = [&](std::size_t i, int c) {
         Source value;
         std::memcpy(&value, base + static_cast<py::ssize_t>(i) * axes.point_stride + c * axes.component_stride,
@@ -108,11 +110,24 @@ void copy_points(const py::array& array, const PointAxes& axes, const std::strin
         axes.component_stride == static_cast<py::ssize_t>(sizeof(Source))) {
         // Nv x 3 C-ordered, or 3 x Nv Fortran-ordered: the same packed memory.
         const auto* source = reinterpret_cast<const Source*>(base);
-        for (std::size_t k = 0; k < 3 * axes.count; ++k) {
-            finite &= (source[k] - source[k] == Source(0));
-            target[k] = static_cast<Component>(source[k]);
+        const std::size_t values = 3 * axes.count;
+        if constexpr (std::is_same_v<Source, Component>) {
+            out.assign(reinterpret_cast<const Point*>(base), reinterpret_cast<const Point*>(base) + axes.count);
+        } else {
+            out.resize(axes.count);
+            auto* target = reinterpret_cast<Component*>(out.data());
+            for (std::size_t k = 0; k < values; ++k) target[k] = static_cast<Component>(source[k]);
         }
+        Source sums[4] = {0, 0, 0, 0};
+        std::size_t k = 0;
+        for (; k + 4 <= values; k += 4) {
+            for (std::size_t lane = 0; lane < 4; ++lane) sums[lane] += source[k + lane] - source[k + lane];
+        }
+        for (; k < values; ++k) sums[0] += source[k] - source[k];
+        finite = (sums[0] + sums[1] + sums[2] + sums[3]) == Source(0);
     } else {
+        out.resize(axes.count);
+        auto* target = reinterpret_cast<Component*>(out.data());
         for (std::size_t i = 0; i < axes.count; ++i) {
             for (int c = 0; c < 3; ++c) {
                 const Source value = read(i, c);
@@ -162,34 +177,63 @@ py::array as_index_array(py::handle value, const std::string& name) {
     return numpy().attr("asarray")(array, "int64");
 }
 
+/// The largest of `count` indices, or ~0 when one is negative (so one comparison with the vertex
+/// count catches both ends), kept in four running maxima and minima: a single one would chain every
+/// comparison to the last (1.1 ns an index; render_object reads its faces on every call).
+template <typename Index>
+unsigned long long largest_index(const Index* source, std::size_t count) {
+    Index maxima[4] = {0, 0, 0, 0};
+    Index minima[4] = {0, 0, 0, 0};
+    std::size_t k = 0;
+    for (; k + 4 <= count; k += 4) {
+        for (std::size_t lane = 0; lane < 4; ++lane) {
+            maxima[lane] = std::max(maxima[lane], source[k + lane]);
+            minima[lane] = std::min(minima[lane], source[k + lane]);
+        }
+    }
+    for (; k < count; ++k) {
+        maxima[0] = std::max(maxima[0], source[k]);
+        minima[0] = std::min(minima[0], source[k]);
+    }
+    const Index smallest = std::min(std::min(minima[0], minima[1]), std::min(minima[2], minima[3]));
+    if (smallest < 0) return ~0ULL;
+    return static_cast<unsigned long long>(std::max(std::max(maxima[0], maxima[1]), std::max(maxima[2], maxima[3])));
+}
+
 /// Reads the indices (packed fast path as for points), then checks them all against
 /// the vertex count at once; the face and index are searched for only on failure.
 template <typename Index>
 std::vector<Triangle> copy_faces(const py::array& array, const PointAxes& axes, const std::string& name,
                                  std::size_t vertex_count) {
     const auto* base = static_cast<const char*>(array.data());
-    std::vector<Triangle> faces(axes.count);
-    auto* target = reinterpret_cast<std::uint32_t*>(faces.data());
+    std::vector<Triangle> faces;
     const auto read = [&](std::size_t i, int c) {
         Index index;
         std::memcpy(&index, base + static_cast<py::ssize_t>(i) * axes.point_stride + c * axes.component_stride,
                     sizeof index);
         return index;
     };
-    // Negative indices become huge unsigned values, so one comparison catches both ends.
     unsigned long long largest = 0;
     if (axes.point_stride == 3 * static_cast<py::ssize_t>(sizeof(Index)) &&
         axes.component_stride == static_cast<py::ssize_t>(sizeof(Index))) {
         const auto* source = reinterpret_cast<const Index*>(base);
-        for (std::size_t k = 0; k < 3 * axes.count; ++k) {
-            largest = std::max(largest, static_cast<unsigned long long>(source[k]));
-            target[k] = static_cast<std::uint32_t>(source[k]);
+        const std::size_t values = 3 * axes.count;
+        largest = largest_index(source, values);
+        if constexpr (std::is_same_v<Index, std::uint32_t>) {
+            faces.assign(reinterpret_cast<const Triangle*>(base), reinterpret_cast<const Triangle*>(base) + axes.count);
+        } else {
+            faces.resize(axes.count);
+            auto* target = reinterpret_cast<std::uint32_t*>(faces.data());
+            for (std::size_t k = 0; k < values; ++k) target[k] = static_cast<std::uint32_t>(source[k]);
         }
     } else {
+        faces.resize(axes.count);
+        auto* target = reinterpret_cast<std::uint32_t*>(faces.data());
         for (std::size_t i = 0; i < axes.count; ++i) {
             for (int c = 0; c < 3; ++c) {
                 const Index index = read(i, c);
-                largest = std::max(largest, static_cast<unsigned long long>(index));
+                const bool negative = std::is_signed_v<Index> && index < 0;
+                largest = std::max(largest, negative ? ~0ULL : static_cast<unsigned long long>(index));
                 target[3 * i + static_cast<std::size_t>(c)] = static_cast<std::uint32_t>(index);
             }
         }

@@ -155,3 +155,51 @@ def test_bad_scene_properties_and_keywords():
         phongrast.render(scene, sample=2)
     with pytest.raises(ValueError, match="faces"):
         phongrast.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 3]])
+
+
+def index_layouts(faces):
+    """The same indices packed (3 x N Fortran-, N x 3 C-ordered: read in blocks of four) and strided."""
+    strided = np.empty((faces.shape[0], 2 * faces.shape[1]), faces.dtype)[:, ::2]
+    strided[:] = faces
+    return {"3xN F": np.asfortranarray(faces), "Nx3 C": np.ascontiguousarray(faces.T), "3xN strided": strided}
+
+
+@pytest.mark.parametrize("dtype", [np.int32, np.int64, np.uint32, np.uint64])
+@pytest.mark.parametrize("where", ["first", "middle", "last"])
+def test_every_bad_index_is_caught_in_every_layout(scene, dtype, where):
+    # The packed reads check indices four at a time and then the rest one by one: a bad index in
+    # either part, in any integer type, must still name its face.
+    all_faces = scene.faces[:, :-1] if scene.faces.shape[1] % 4 == 0 else scene.faces  # 3 x count not a multiple of 4
+    count = all_faces.shape[1]
+    assert (3 * count) % 4 != 0
+    face = {"first": 0, "middle": count // 2, "last": count - 1}[where]
+    bad_values = [scene.verts.shape[1], np.iinfo(dtype).max]
+    if np.issubdtype(dtype, np.signedinteger):
+        bad_values += [-1, np.iinfo(dtype).min]
+    for value in bad_values:
+        faces = all_faces.astype(dtype)
+        faces[2, face] = value
+        for name, laid_out in index_layouts(faces).items():
+            with pytest.raises(ValueError) as raised:
+                call(scene, faces=laid_out)
+            assert f"face {face} has vertex index {value}" in str(raised.value), (name, value)
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+@pytest.mark.parametrize("value", [np.nan, np.inf, -np.inf])
+def test_a_non_finite_last_value_is_caught_in_every_layout(scene, dtype, value):
+    # The last component lies past the packed reads' blocks of four when 3 x Nv is not a multiple of four.
+    verts = scene.verts.astype(dtype)
+    last = verts.shape[1] - 1
+    assert (3 * verts.shape[1]) % 4 != 0
+    verts[2, last] = value
+    strided = np.empty((3, 2 * verts.shape[1]), dtype)[:, ::2]
+    strided[:] = verts
+    for laid_out in [np.asfortranarray(verts), np.ascontiguousarray(verts.T), strided]:
+        with pytest.raises(ValueError) as raised:
+            call(scene, verts=laid_out)
+        assert f"point {last}" in str(raised.value)
+        colors = scene.colors.astype(dtype)
+        colors[0, last] = value
+        with pytest.raises(ValueError, match="vert_colors"):
+            call(scene, vert_colors=np.asfortranarray(colors))
