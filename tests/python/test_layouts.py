@@ -132,3 +132,36 @@ def test_seed_classes_copy_and_pickle_like_plain_python_objects(reference):
     lights = [pickle.loads(pickle.dumps(copy.copy(light))) for light in scene.lights]
     assert np.array_equal(scene.render("phong", mat=mat, lights=lights), expected)
     assert repr(mat).startswith("PhongMaterial(ka=") and lights[0].position is lights[0].pos
+
+
+def render_with(scene, eye=None, up=None):
+    """render_object of `scene` (Phong) with its eye or up given in another form."""
+    return phongrast.render_object("phong", scene.focal, scene.eye if eye is None else eye, scene.lookat,
+                                   scene.up if up is None else up, scene.bg, scene.M, scene.N, scene.H, scene.W,
+                                   scene.verts, scene.colors, scene.faces, scene.mat, scene.lights, scene.ambient, "full")
+
+
+def test_triples_in_every_form_read_the_same(reference):
+    # Lists, tuples and 1-d float arrays are read without numpy's help; every other form (big-endian,
+    # 2-d, integer, strided) through numpy: all of them must read the same three numbers.
+    scene, expected = reference
+    eye = [float(v) for v in scene.eye]
+    strided = np.empty(6)[::2]
+    strided[:] = eye
+    forms = {"list": eye, "tuple": tuple(eye), "float64": np.array(eye),
+             "big-endian": np.array(eye, ">f8"), "2-d": np.array([eye]), "strided": strided,
+             "object list": [np.float64(v) for v in eye]}
+    for name, form in forms.items():
+        assert np.array_equal(render_with(scene, eye=form), expected), name
+    rounded = [float(np.float32(v)) for v in eye]
+    assert rounded != eye  # the float32 form below must really round
+    assert np.array_equal(render_with(scene, eye=np.array(rounded, np.float32)), render_with(scene, eye=rounded))
+    assert np.array_equal(render_with(scene, up=[0, 1, 0]), render_with(scene, up=np.array([0.0, 1.0, 0.0])))
+
+
+def test_numbers_too_large_or_not_finite_in_a_triple_are_refused(reference):
+    scene, _ = reference
+    for bad in ([0.0, 10 ** 400, 1.0], (0.0, float("inf"), 1.0), np.array([0.0, np.nan, 1.0], np.float32)):
+        with pytest.raises((ValueError, TypeError, OverflowError)) as raised:
+            render_with(scene, eye=bad)
+        assert "eye" in str(raised.value), bad
