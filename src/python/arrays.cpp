@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <initializer_list>
 #include <stdexcept>
@@ -88,6 +89,16 @@ PointAxes point_axes(const py::array& array, const std::string& name, SquareLayo
                           " value; expected finite numbers");
 }
 
+/// Whether the array's values lie one after another, three per point, at their type's alignment:
+/// then they are read as a plain array (numpy's arrays are aligned unless made from a buffer at an
+/// odd offset; those are read value by value through memcpy).
+template <typename Value>
+bool packed(const char* base, const PointAxes& axes) {
+    return axes.point_stride == 3 * static_cast<py::ssize_t>(sizeof(Value)) &&
+           axes.component_stride == static_cast<py::ssize_t>(sizeof(Value)) &&
+           reinterpret_cast<std::uintptr_t>(base) % alignof(Value) == 0;
+}
+
 /// Converts the components and notes, without a branch per value, whether all are finite
 /// (x - x is 0 for a finite x and NaN otherwise, and a NaN stays in a sum); the slow search
 /// for the culprit runs only on failure. The packed path keeps four independent sums so the
@@ -106,8 +117,7 @@ void copy_points(const py::array& array, const PointAxes& axes, const std::strin
         return value;
     };
     bool finite = true;
-    if (axes.point_stride == 3 * static_cast<py::ssize_t>(sizeof(Source)) &&
-        axes.component_stride == static_cast<py::ssize_t>(sizeof(Source))) {
+    if (packed<Source>(base, axes)) {
         // Nv x 3 C-ordered, or 3 x Nv Fortran-ordered: the same packed memory.
         const auto* source = reinterpret_cast<const Source*>(base);
         const std::size_t values = 3 * axes.count;
@@ -214,8 +224,7 @@ std::vector<Triangle> copy_faces(const py::array& array, const PointAxes& axes, 
         return index;
     };
     unsigned long long largest = 0;
-    if (axes.point_stride == 3 * static_cast<py::ssize_t>(sizeof(Index)) &&
-        axes.component_stride == static_cast<py::ssize_t>(sizeof(Index))) {
+    if (packed<Index>(base, axes)) {
         const auto* source = reinterpret_cast<const Index*>(base);
         const std::size_t values = 3 * axes.count;
         largest = largest_index(source, values);

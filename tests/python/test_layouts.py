@@ -165,3 +165,19 @@ def test_numbers_too_large_or_not_finite_in_a_triple_are_refused(reference):
         with pytest.raises((ValueError, TypeError, OverflowError)) as raised:
             render_with(scene, eye=bad)
         assert "eye" in str(raised.value), bad
+
+
+def test_arrays_at_an_odd_address_read_the_same(reference):
+    # A buffer at an odd offset holds values off their alignment: read value by value, same image.
+    scene, expected = reference
+
+    def unaligned(array):
+        data = np.ascontiguousarray(array)
+        raw = np.frombuffer(b"\0" + data.tobytes(), dtype=data.dtype, offset=1).reshape(data.shape)
+        assert not raw.flags.aligned
+        return raw
+
+    image = phongrast.render_object("phong", scene.focal, scene.eye, scene.lookat, scene.up, scene.bg, scene.M, scene.N,
+                                    scene.H, scene.W, unaligned(scene.verts.T), unaligned(scene.colors.T),
+                                    unaligned(scene.faces.T), scene.mat, scene.lights, scene.ambient, "full")
+    assert np.array_equal(image, expected)
