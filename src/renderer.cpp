@@ -191,9 +191,10 @@ namespace {
 
 /// render()'s work, handing the frame's result to `deliver` while the
 /// thread's state (or a fresh one, for a large frame or a nested call) still
-/// holds it: `kept` says whether the state stays for the next call.
-template <typename Deliver>
-void render_one_off(const Scene& scene, const RenderOptions& options, Deliver&& deliver) {
+/// holds it: `kept` says whether the state stays for the next call. With the
+/// kept state, `prepare` may first put the caller's buffers in its result.
+template <typename Prepare, typename Deliver>
+void render_one_off(const Scene& scene, const RenderOptions& options, Prepare&& prepare, Deliver&& deliver) {
     OneOffMemory& warm = t_one_off;
     if (warm.busy || !keeps_memory(scene, options)) {
         detail::RendererState state;
@@ -212,6 +213,7 @@ void render_one_off(const Scene& scene, const RenderOptions& options, Deliver&& 
     state.options = options;
     state.assembly.forget();
     state.mesh_order.forget_mesh();
+    prepare(state.result);
     try {
         state.render(scene, true);
     } catch (...) {
@@ -226,7 +228,7 @@ void render_one_off(const Scene& scene, const RenderOptions& options, Deliver&& 
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     RenderResult result;
-    render_one_off(scene, options, [&result](RenderResult& made, bool kept) {
+    render_one_off(scene, options, [](RenderResult&) {}, [&result](RenderResult& made, bool kept) {
         // A copy when the state stays: it keeps its image (and extra outputs)
         // for the next call. Moving it out would make the next call grow a
         // new image, mapping and zeroing its pages (about 0.5 ms at 512x512
@@ -242,13 +244,23 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
 }
 
 void render(const Scene& scene, const RenderOptions& options, RenderResult& out) {
-    render_one_off(scene, options, [&out](RenderResult& made, bool kept) {
+    // The frame is drawn in out's image when it can hold it, the state's own
+    // image staying as it is: a loop handing the same buffer back (a C++ loop
+    // passing one RenderResult, Python's recycled arrays) then draws in one
+    // buffer, not in two by turns, as the trade after the frame alone would.
+    const std::size_t pixels = static_cast<std::size_t>(std::max(scene.image.rows, 0)) *
+                               static_cast<std::size_t>(std::max(scene.image.columns, 0));
+    const auto draw_in_out = [&out, pixels](RenderResult& working) {
+        if (out.image.pixels.capacity() >= pixels && pixels != 0) std::swap(out.image, working.image);
+    };
+    render_one_off(scene, options, draw_in_out, [&out](RenderResult& made, bool kept) {
         if (!kept) {
             out = std::move(made);
             return;
         }
-        // The caller's old image becomes the state's working image (the next
-        // frame resizes and overwrites it); the frame's image goes out as it is.
+        // The frame's image goes out as it is; what out held (the state's own
+        // image, or out's old one when it was too small) becomes the state's
+        // working image for the next frame, which resizes and overwrites it.
         std::swap(out.image, made.image);
         out.stats = made.stats;
         out.aovs = made.aovs;

@@ -267,7 +267,7 @@ TEST_CASE("computed normals are reused only while the mesh's positions and trian
     CHECK_FALSE(test_render_modes::same_bits(rewound.image, moved.image));
 }
 
-TEST_CASE("render(scene, options, out) paints render()'s picture, its image traded for out's old one, not copied") {
+TEST_CASE("render(scene, options, out) paints render()'s picture in out's buffer when it is large enough, else trades, never copies") {
     const Scene scene = sphere(16, 64, 80, Shader::phong, false);
     const RenderOptions options = RenderOptions::exact();
     release_render_memory();
@@ -277,14 +277,20 @@ TEST_CASE("render(scene, options, out) paints render()'s picture, its image trad
     render(scene, options, out);
     CHECK(test_render_modes::same_bits(out.image, expected.image));
     check_same_render_stats(out.stats, expected.stats);
-    // Call after call the two buffers trade places: the image handed out is
-    // the one the frame was drawn in, never a copy.
+    // out's 3 x 5 buffer was too small: the frame was drawn in the thread's
+    // kept image and traded for it. From now on out's buffer holds the frame,
+    // which is drawn in it call after call: one buffer, never a copy.
     const glm::vec3* first = out.image.pixels.data();
     render(scene, options, out);
-    const glm::vec3* second = out.image.pixels.data();
-    render(scene, options, out);
-    CHECK(second != first);
     CHECK(out.image.pixels.data() == first);
+    render(scene, options, out);
+    CHECK(out.image.pixels.data() == first);
+    CHECK(test_render_modes::same_bits(out.image, expected.image));
+    // Any buffer large enough is drawn in, whatever it held.
+    out.image = Image(80, 64, glm::vec3(-3.0f));
+    const glm::vec3* given = out.image.pixels.data();
+    render(scene, options, out);
+    CHECK(out.image.pixels.data() == given);
     CHECK(test_render_modes::same_bits(out.image, expected.image));
     // Extra outputs come with it; another scene draws what render() draws.
     RenderOptions with_depth = options;

@@ -259,12 +259,13 @@ struct RenderResult {
 /// keeps any size). The image returned is a copy of the kept one.
 RenderResult render(const Scene& scene, const RenderOptions& options = RenderOptions::exact());
 
-/// render() into `out`, the image without a copy: out.image's memory and the
-/// thread's kept image trade places, so a loop that passes the same
-/// RenderResult call after call renders with no copy of its image and no
-/// fresh pages (what out.image held before does not matter: its size and
-/// contents are overwritten). The picture, statistics and extra outputs are
-/// render()'s.
+/// render() into `out`, the image without a copy: the frame is drawn in
+/// out.image's memory when it can hold the frame's pixels (else in the
+/// thread's kept image, which then trades places with out.image), so a loop
+/// that passes the same RenderResult call after call draws in one buffer,
+/// with no copy of its image and no fresh pages (what out.image held before
+/// does not matter: its size and contents are overwritten). The picture,
+/// statistics and extra outputs are render()'s.
 void render(const Scene& scene, const RenderOptions& options, RenderResult& out);
 
 /// Frees the memory render() keeps for the calling thread (it is freed

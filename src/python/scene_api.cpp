@@ -231,7 +231,7 @@ PyScene scene_from_dict(py::dict description, const std::string& folder) {
 py::tuple render_with_stats(const PyScene& scene, RenderOptions options, py::object progress_callable) {
     const std::shared_ptr<const Scene> keep = scene.scene;
     RenderResult result;
-    result.image = take_recycled_image();  // becomes the thread's working image: no copy of this call's
+    result.image = take_recycled_image();  // the frame is drawn in it (render(scene, options, out)): no copy
     PythonProgress progress(std::move(progress_callable));  // Ctrl-C and `progress` (interrupts.hpp)
     options.progress = progress.callback();
     progress.run([&] {

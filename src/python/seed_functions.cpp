@@ -76,7 +76,7 @@ py::array render_object(const py::object& shader, const py::object& focal, const
         throw py::value_error(seed_names(error.what()));
     }
     RenderResult result;
-    result.image = take_recycled_image();  // becomes the thread's working image: no copy of this call's
+    result.image = take_recycled_image();  // the frame is drawn in it (render(scene, options, out)): no copy
     PythonProgress progress(progress_keyword(keywords));  // Ctrl-C and `progress` (interrupts.hpp)
     options.progress = progress.callback();
     progress.run([&] {
