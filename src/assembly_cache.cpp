@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <unordered_map>
 
+#include "same_array.hpp"
 #include "scene_assembly.hpp"
 
 namespace phongrast::detail {
@@ -19,12 +20,6 @@ template <typename T>
 bool same_bits(const T& a, const T& b) {
     static_assert(std::is_trivially_copyable_v<T>);
     return std::memcmp(&a, &b, sizeof(T)) == 0;
-}
-
-template <typename T>
-bool same_array(const std::vector<T>& a, const std::vector<T>& b) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
 template <typename T>

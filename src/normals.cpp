@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -17,6 +16,7 @@
 #include "phongrast/mesh.hpp"
 #include "prefetch.hpp"
 #include "resize_polling.hpp"
+#include "same_array.hpp"
 
 namespace phongrast {
 namespace detail {
@@ -186,21 +186,10 @@ bool calculate_normals_by_corners(const std::vector<glm::dvec3>& positions, cons
     return true;
 }
 
-namespace {
-
-/// The same bytes in two vectors of the same size (an empty vector's data()
-/// may be null, which memcmp must not be given even for no bytes).
-template <typename T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-}  // namespace
-
 bool ComputedNormalsSource::matches(const Mesh& mesh) const {
     // Bytes, not values: -0.0 against 0.0 or a NaN payload recomputes, which is
     // never wrong; equal bytes give calculate_normals_into() equal inputs.
-    return valid && same_bytes(positions, mesh.positions) && same_bytes(triangles, mesh.triangles);
+    return valid && same_array(positions, mesh.positions) && same_array(triangles, mesh.triangles);
 }
 
 void ComputedNormalsSource::remember(const Mesh& mesh) {

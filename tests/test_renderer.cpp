@@ -330,6 +330,12 @@ TEST_CASE("render() from a progress callback gets its own memory, and a failed c
     RenderOptions cancelling = RenderOptions::exact();
     cancelling.progress = [](double) { return false; };
     CHECK_THROWS_AS(render(outer, cancelling), RenderCancelled);
+    // A call drawing in the caller's buffer that fails leaves `out` whole and usable.
+    RenderResult out;
+    out.image = Image(60, 60, glm::vec3(5.0f));
+    CHECK_THROWS_AS(render(outer, cancelling, out), RenderCancelled);
+    render(outer, RenderOptions::exact(), out);
+    CHECK(test_render_modes::same_bits(out.image, outer_alone.image));
     Scene bad = inner;
     bad.camera.focal = -1.0;
     CHECK_THROWS_AS(render(bad), std::invalid_argument);
