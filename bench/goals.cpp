@@ -20,7 +20,7 @@
 
 #include <CLI/CLI.hpp>
 
-// Internal: detail::set_fill_in_mesh_order_allowed, for --banded-ambient.
+// Internal: detail::set_fill_in_mesh_order_allowed and set_mesh_order_walks, for --banded-ambient and --one-walk.
 #include "fill_driver.hpp"
 #include "phongrast/render.hpp"
 #include "mesh_orders.hpp"
@@ -42,7 +42,7 @@ struct Settings {
     std::vector<int> threads = {1, 2};
     int rows = 0, repeat = 5;
     double seconds = 2.0;
-    bool header = false, list = false, banded_ambient = false;
+    bool header = false, list = false, banded_ambient = false, one_walk = false;
     support::SpeedSceneSelection selection;
 };
 
@@ -89,7 +89,7 @@ PeakMemory peak_memory(phongrast::Scene& scene, int threads) {
 /// With `banded_ambient`, a fifth: Phong ambient through set-up, sort, bins
 /// and bands (the fill in mesh order forbidden), as every thread count did before it.
 std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast::RenderOptions& options, int repeat,
-                                        double seconds, bool banded_ambient = false) {
+                                        double seconds, bool banded_ambient = false, bool one_walk = false) {
     struct Case {
         Shader shader;
         Lighting lighting;
@@ -102,7 +102,8 @@ std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast
     // after frame, nothing carried over from another case's frame. Four sets of
     // buffers: about 6 GB for the 8M mesh.
     std::vector<phongrast::Renderer> renderers;
-    for (std::size_t k = 0; k < cases.size() + (banded_ambient ? 1 : 0); ++k) renderers.emplace_back(options);
+    const std::size_t extra = (banded_ambient ? 1 : 0) + (one_walk ? 1 : 0);
+    for (std::size_t k = 0; k < cases.size() + extra; ++k) renderers.emplace_back(options);
     std::vector<std::function<double()>> contenders;
     for (std::size_t k = 0; k < cases.size(); ++k) {
         contenders.push_back([&, k] {
@@ -116,8 +117,18 @@ std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast
             scene.shader = Shader::phong;
             scene.lighting = Lighting::only_ambient();
             const bool allowed = phongrast::detail::set_fill_in_mesh_order_allowed(false);
-            const double ms = support::time_ms([&] { renderers.back().render(scene); });
+            const double ms = support::time_ms([&] { renderers[cases.size()].render(scene); });
             phongrast::detail::set_fill_in_mesh_order_allowed(allowed);
+            return ms;
+        });
+    }
+    if (one_walk) {
+        contenders.push_back([&] {
+            scene.shader = Shader::phong;
+            scene.lighting = Lighting::only_ambient();
+            const int walks = phongrast::detail::set_mesh_order_walks(1);
+            const double ms = support::time_ms([&] { renderers.back().render(scene); });
+            phongrast::detail::set_mesh_order_walks(walks);
             return ms;
         });
     }
@@ -163,11 +174,16 @@ void run(const Settings& s) {
     for (int threads : s.threads) {
         const PeakMemory peak = peak_memory(scene, threads);
         const std::vector<double> ms =
-            ambient_and_full_ms(scene, options_for(s.mode, threads), s.repeat, s.seconds, s.banded_ambient);
+            ambient_and_full_ms(scene, options_for(s.mode, threads), s.repeat, s.seconds, s.banded_ambient, s.one_walk);
+        // On stderr: the table's row (stdout) keeps its columns.
         if (s.banded_ambient) {
-            // On stderr: the table's row (stdout) keeps its columns.
             std::fprintf(stderr, "%s, %d thread(s): Phong ambient banded %.2f ms, / full %.3f; in mesh order / banded %.3f\n",
                          named.name.c_str(), threads, ms[4], ms[4] / ms[0], ms[1] / ms[4]);
+        }
+        if (s.one_walk) {
+            const double one = ms.back();
+            std::fprintf(stderr, "%s, %d thread(s): Phong ambient in one walk %.2f ms, / full %.3f; walks per thread / one walk %.3f\n",
+                         named.name.c_str(), threads, one, one / ms[0], ms[1] / one);
         }
         std::printf("| %s | %s | %.0f | %dx%d | %d | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f | %.3f | %.1f | %.1f | %.1f | %s "
                     "| %.1f | %.1f | %s |\n",
@@ -198,6 +214,9 @@ int main(int argc, char** argv) {
     app.add_flag("--banded-ambient", s.banded_ambient,
                  "also time Phong ambient with the fill in mesh order forbidden (sorted, binned, by bands), "
                  "interleaved with the others; its ratios on stderr");
+    app.add_flag("--one-walk", s.one_walk,
+                 "also time Phong ambient filled in mesh order in one walk whatever the threads (the walk per "
+                 "thread forbidden), interleaved with the others; its ratios on stderr");
     bool no_assets = false, no_large = false, no_huge = false;
     app.add_flag("--list", s.list, "print the names of the speed scenes (less those of --no-...) and stop");
     app.add_flag("--no-assets", no_assets, "--list: without the meshes of ../shared/assets");

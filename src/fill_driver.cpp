@@ -230,16 +230,18 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
 namespace {
 std::atomic<bool> mesh_order_fill_allowed{true};
 std::atomic<std::uint64_t> mesh_order_fill_passes{0};
+std::atomic<int> mesh_order_fill_walks{0};
 }  // namespace
 
 bool set_fill_in_mesh_order_allowed(bool allowed) { return mesh_order_fill_allowed.exchange(allowed); }
 
 std::uint64_t passes_filled_in_mesh_order() { return mesh_order_fill_passes.load(std::memory_order_relaxed); }
 
+int set_mesh_order_walks(int walks) { return mesh_order_fill_walks.exchange(walks); }
+
 template <typename Real>
 bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs) {
-    return plan.may_fill_in_mesh_order && !extra_outputs && tbb::this_task_arena::max_concurrency() == 1 &&
-           mesh_order_fill_allowed.load(std::memory_order_relaxed);
+    return plan.may_fill_in_mesh_order && !extra_outputs && mesh_order_fill_allowed.load(std::memory_order_relaxed);
 }
 
 template <typename Real>
@@ -253,37 +255,65 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
     const std::size_t samples = static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns);
     const bool mapped = reserve_on_huge_pages(image.pixels, samples);
     resize_polling(image.pixels, samples, progress.poll_function(), !mapped);
-    fill_pixels(image.pixels.data(), samples, scene.image.background);
-    FillTarget<Real> target{image, memory.depth_buffer, 0, rows, false, 0, 0};
     const bool ranked = !plan.order_free;
     if (ranked) {
         // Key 0 is no triangle's (farthest_first_key() gives it to a NaN
         // only): "no colour yet", so the ties need no clearing.
         assign_populated(memory.rank_keys, samples, std::uint64_t(0));
-        target.rank_keys = memory.rank_keys.data();
         // The walk takes the triangles in mesh order, i.e. in the order of
         // their ties, unless the mesh is a reordered copy (mesh_order.hpp).
-        if (original_triangle != nullptr) {
-            if (memory.rank_ties.size() < samples) memory.rank_ties.resize(samples);
-            target.rank_ties = memory.rank_ties.data();
-        }
+        if (original_triangle != nullptr && memory.rank_ties.size() < samples) memory.rank_ties.resize(samples);
     }
-    DirectFill<Real> fill;
-    fill.kernel = plan.kernel;
-    fill.constants = &plan.constants;
-    fill.target = &target;
-    fill.vectors = &memory.direct_vectors;
-    fill.original_triangle = original_triangle;
-    fill.ranked = ranked;
-    fill.reads_varyings = !plan.constants.uniform_color;
-    const std::uint64_t drawn = set_up_and_fill(setup, fill, draws, stats, progress);
-    // The rank test puts every drawn triangle in painter's order, as the sort would have.
-    if (ranked) stats.triangles_sorted += drawn;
-    stats.samples_covered += target.covered;
-    stats.samples_shaded += target.samples;
-    stats.nonfinite_values_replaced += target.replaced;
+    // One walk per thread, each over its own rows (RowSplit).
+    const int forced_walks = mesh_order_fill_walks.load(std::memory_order_relaxed);
+    RowSplit& split = draws.direct_split;
+    split_rows_by_triangles(scene.mesh.triangles, setup.vertices.screen, rows,
+                            forced_walks > 0 ? forced_walks : tbb::this_task_arena::max_concurrency(),
+                            draws.direct_split_sample, split);
+    const std::size_t walks = static_cast<std::size_t>(split.parts());
+    if (draws.direct_parts.size() < walks) draws.direct_parts.resize(walks);
+    const std::size_t chunks = (scene.mesh.triangles.size() + kSetupChunk - 1) / kSetupChunk;
+    progress.begin_stage(0.1, 1.0, chunks * walks);
+    tbb::parallel_for(std::size_t(0), walks, [&](std::size_t walk) {
+        if (progress.cancelled()) return;
+        const int row_begin = split.starts[walk], row_end = split.starts[walk + 1];
+        const std::size_t first = static_cast<std::size_t>(row_begin) * static_cast<std::size_t>(columns);
+        const std::size_t end = static_cast<std::size_t>(row_end) * static_cast<std::size_t>(columns);
+        fill_pixels(image.pixels.data() + first, end - first, scene.image.background);
+        FillTarget<Real> target{image, memory.depth_buffer, row_begin, row_end, false, 0, 0};
+        if (ranked) {
+            target.rank_keys = memory.rank_keys.data();
+            if (original_triangle != nullptr) target.rank_ties = memory.rank_ties.data();
+        }
+        DirectFill<Real> fill;
+        fill.kernel = plan.kernel;
+        fill.constants = &plan.constants;
+        fill.target = &target;
+        DirectScratch<Real>& scratch = draws.direct_parts[walk];
+        fill.vectors = &scratch.fill_vectors;
+        fill.original_triangle = original_triangle;
+        fill.ranked = ranked;
+        fill.reads_varyings = !plan.constants.uniform_color;
+        scratch.counts = SetupCounts{};
+        set_up_and_fill(setup, fill, split, static_cast<int>(walk), scratch, scratch.counts, progress);
+        scratch.samples_covered = target.covered;
+        scratch.samples_shaded = target.samples;
+        scratch.values_replaced = target.replaced;
+    });
+    progress.throw_if_cancelled();
+    std::uint64_t shaded = 0;
+    for (std::size_t walk = 0; walk < walks; ++walk) {
+        const DirectScratch<Real>& scratch = draws.direct_parts[walk];
+        add_setup_counts(setup, scratch.counts, stats);
+        // The rank test puts every drawn triangle in painter's order, as the sort would have.
+        if (ranked) stats.triangles_sorted += scratch.counts.drawn;
+        stats.samples_covered += scratch.samples_covered;
+        stats.samples_shaded += scratch.samples_shaded;
+        stats.nonfinite_values_replaced += scratch.values_replaced;
+        shaded += scratch.samples_shaded;
+    }
     if (scene.shader == Shader::phong) {
-        count_term_evaluations(scene, options, plan.effects, target.samples, LitPoints::phong_samples, stats);
+        count_term_evaluations(scene, options, plan.effects, shaded, LitPoints::phong_samples, stats);
     }
 }
 

@@ -34,7 +34,6 @@ struct FillMemory {
     /// fill_in_mesh_order(): per sample, the painter's rank of its colour (FillTarget::rank_keys).
     FrameVector<std::uint64_t> rank_keys;
     FrameVector<std::uint32_t> rank_ties;
-    LightVectorsAt<Real> direct_vectors;
 };
 
 /// How this render fills: the kernel, its constants and the strategy.
@@ -76,23 +75,27 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
                int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats,
                ProgressMonitor& progress);
 
-/// Whether this pass fills in mesh order: the plan allows it, no extra
-/// output names the last triangle, and the render runs on one thread (the
-/// walk is serial; more threads set up, sort, bin and fill bands in parallel).
+/// Whether this pass fills in mesh order: the plan allows it and no extra
+/// output names the last triangle.
 template <typename Real>
 bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs);
 
 /// For tests: whether fills_in_mesh_order() may say yes (it may by default),
-/// so that one thread can render a scene both ways. Returns the previous setting.
+/// so that a scene can be rendered both ways. Returns the previous setting.
 bool set_fill_in_mesh_order_allowed(bool allowed);
 /// For tests: the passes filled in mesh order since the process started.
 std::uint64_t passes_filled_in_mesh_order();
+/// For tests: the walks fill_in_mesh_order() splits the rows into (at most:
+/// each keeps a row), whatever the threads; 0 (the default) means one per
+/// thread. Returns the previous setting.
+int set_mesh_order_walks(int walks);
 
-/// One thread, ambient only (fills_in_mesh_order()): set-up and fill in one
-/// walk of the mesh (set_up_and_fill()), painter's order kept by a rank test
-/// per sample instead of a sort, into `image` resized and cleared as
-/// fill_bins() does; adds what set-up and fill_bins() add to `stats`, the
-/// same counts. The image is the one painter's fill paints, bit for bit.
+/// Ambient only (fills_in_mesh_order()): set-up and fill in walks of the
+/// mesh, one per thread, each over its own rows of the image
+/// (set_up_and_fill(), RowSplit), painter's order kept by a rank test per
+/// sample instead of a sort, into `image` resized and cleared as fill_bins()
+/// does; adds what set-up and fill_bins() add to `stats`, the same counts.
+/// The image is the one painter's fill paints, bit for bit.
 template <typename Real>
 void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const FillPlan<Real>& plan,
                         const SetupInput<Real>& setup, const std::uint32_t* original_triangle, int rows, int columns,

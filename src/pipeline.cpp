@@ -165,7 +165,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                  parts.specular_part_shaders,
                                  exact_gouraud && in_parts ? memory.vertex_colour_parts.data() : nullptr};
     if (fills_in_mesh_order(fill_plan, out.aov_planes.any())) {
-        // One thread, ambient only: no record, sort or bins (fill_driver.hpp).
+        // Ambient only: no record, sort or bins; a walk of the mesh per thread (fill_driver.hpp).
         fill_in_mesh_order(scene, options, fill_plan, setup, out.original_triangle, rows, columns, memory.draws,
                            memory.fill, out.image, stats, progress);
         return;

@@ -508,37 +508,85 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
 /// How many triangles ahead set_up_and_fill() asks for what it will read.
 constexpr std::size_t kDirectAhead = 16;
 
+/// How far outside its corners' rows a triangle may cover a sample: a
+/// sample's centre is half a row below its row number, and snapping moves a
+/// corner by at most 1/512 (raster.hpp); a clipped piece lies inside the
+/// triangle. Two rows leave room to spare.
+constexpr double kCoverageReach = 2.0;
+
+void split_rows_by_triangles(const std::vector<Triangle>& triangles, const FrameVector<ScreenVertex>& screen,
+                             int rows, int parts, std::vector<double>& sample, RowSplit& split) {
+    parts = std::max(1, std::min(parts, rows));
+    split.starts.assign(1, 0);
+    if (parts > 1) {
+        constexpr std::size_t kSample = 4096;
+        const std::size_t step = std::max<std::size_t>(1, triangles.size() / kSample);
+        sample.clear();
+        for (std::size_t t = 0; t < triangles.size(); t += step) {
+            const double row = screen[triangles[t][0]].row;
+            if (row >= 0.0 && row < rows) sample.push_back(row);  // NaN and off-image corners left out
+        }
+        std::sort(sample.begin(), sample.end());
+        for (int p = 1; p < parts; ++p) {
+            // Equal rows when nothing was sampled inside the image.
+            const double quantile = sample.empty() ? double(rows) * p / parts
+                                                   : sample[sample.size() * static_cast<std::size_t>(p) / parts];
+            const int row = std::max(split.starts.back() + 1, static_cast<int>(quantile));
+            if (row > rows - (parts - p)) break;  // leave a row for each part after it
+            split.starts.push_back(row);
+        }
+    }
+    split.starts.push_back(rows);
+}
+
 template <typename Real>
-std::uint64_t set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, DrawList<Real>& draws,
-                              RenderStats& stats, ProgressMonitor& progress) {
+void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, const RowSplit& split, int part,
+                     DirectScratch<Real>& scratch, SetupCounts& counts, ProgressMonitor& progress) {
     const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
     const std::size_t chunks = (triangles.size() + kSetupChunk - 1) / kSetupChunk;
     const FrameVector<ScreenVertex>& screen = input.vertices.screen;
-    ChunkVector<FillTriangle<Real>>& out = draws.direct_draws;
+    ChunkVector<FillTriangle<Real>>& out = scratch.draws;
     out.clear();
     out.reserve(8);  // a clipped triangle's fan has at most 6 pieces: no allocation per triangle
-    ClipVertexStore<Real>& clip_vertices = draws.direct_clip_vertices;
-    SetupCounts counts;
-    TriangleSetup<Real> setup(input, out, clip_vertices, counts, draws.direct_vectors);
+    ClipVertexStore<Real>& clip_vertices = scratch.clip_vertices;
+    // The triangles this part owns are counted; the others it sets up only to fill their rows here.
+    SetupCounts counted_elsewhere;
+    TriangleSetup<Real> owned_setup(input, out, clip_vertices, counts, scratch.vectors);
+    TriangleSetup<Real> shared_setup(input, out, clip_vertices, counted_elsewhere, scratch.vectors);
+    const bool whole_image = split.parts() == 1;
+    const std::size_t part_index = static_cast<std::size_t>(part);
+    const int first_row = split.starts[part_index], end_row = split.starts[part_index + 1];
+    // A triangle whose corners all lie this far above or below the part's rows covers none of them.
+    const double reach_begin = first_row - kCoverageReach, reach_end = end_row + kCoverageReach;
     FillTarget<Real>& target = *fill.target;
     const FrameVector<Varyings<Real>>& varyings = input.vertices.varyings;
-    const double rows = target.image.rows, columns = target.image.columns;
+    const double columns = target.image.columns;
     const std::size_t row_length = static_cast<std::size_t>(target.image.columns);
-    progress.begin_stage(0.1, 1.0, chunks);
     for (std::size_t chunk = 0; chunk < chunks && !progress.cancelled(); ++chunk) {
         const std::size_t end = std::min(triangles.size(), (chunk + 1) * kSetupChunk);
         for (std::size_t t = chunk * kSetupChunk; t < end; ++t) {
+            const Triangle& tri = triangles[t];
+            bool owned = true;
+            if (!whole_image) {
+                // NaN rows (a corner not in front of the eye) compare false: such a triangle is never skipped.
+                const double r0 = screen[tri[0]].row, r1 = screen[tri[1]].row, r2 = screen[tri[2]].row;
+                const bool apart = (r0 < reach_begin && r1 < reach_begin && r2 < reach_begin) ||
+                                   (r0 > reach_end && r1 > reach_end && r2 > reach_end);
+                owned = split.owner(r0) == part;
+                if (apart && !owned) continue;
+            }
             if (t + kDirectAhead < triangles.size()) {
                 // The samples a triangle of a large mesh covers lie next to its
                 // first corner: ask for their ranks and pixels, and for the corners'
                 // varyings, a few triangles ahead (most are a cache miss each).
                 const Triangle& ahead = triangles[t + kDirectAhead];
                 const ScreenVertex& corner = screen[ahead[0]];
-                if (corner.row >= 0.0 && corner.row < rows && corner.column >= 0.0 && corner.column < columns) {
+                if (corner.row >= first_row && corner.row < end_row && corner.column >= 0.0 &&
+                    corner.column < columns) {
                     const std::size_t at = static_cast<std::size_t>(corner.row) * row_length +
                                            static_cast<std::size_t>(corner.column);
                     // And the row below: a triangle of a pixel or two often covers two rows.
-                    const std::size_t below = corner.row + 1.0 < rows ? at + row_length : at;
+                    const std::size_t below = corner.row + 1.0 < end_row ? at + row_length : at;
                     if (target.rank_keys != nullptr) {
                         prefetch_address(target.rank_keys + at);
                         prefetch_address(target.rank_keys + below);
@@ -546,34 +594,39 @@ std::uint64_t set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Re
                     prefetch_address(target.image.pixels.data() + at);
                     prefetch_address(target.image.pixels.data() + below);
                 }
-                if (fill.reads_varyings) {
+                // Not for a triangle another walk fills: its varyings are that walk's reads.
+                const bool reaches_here = whole_image || (corner.row >= reach_begin && corner.row <= reach_end);
+                if (fill.reads_varyings && reaches_here) {
                     for (std::uint32_t vertex : ahead) prefetch_object(&varyings[vertex]);
                 }
             }
             out.clear();
             clip_vertices.clear();  // the draws pointing there are filled before the next triangle
-            setup.run(static_cast<std::uint32_t>(t));
+            (owned ? owned_setup : shared_setup).run(static_cast<std::uint32_t>(t));
             if (out.empty()) continue;
             if (fill.ranked) {
-                target.key = painter_key(triangles[t], screen);
+                target.key = painter_key(tri, screen);
                 target.tie = fill.original_triangle != nullptr ? fill.original_triangle[t] : static_cast<std::uint32_t>(t);
             }
             for (const FillTriangle<Real>& draw : out) fill.kernel(draw, target, *fill.vectors, *fill.constants);
         }
         progress.piece_done();
     }
-    progress.throw_if_cancelled();
+}
+
+template <typename Real>
+void add_setup_counts(const SetupInput<Real>& input, const SetupCounts& counts, RenderStats& stats) {
     add_counts(counts, stats);
     count_term_evaluations(input.scene, input.options, input.shader.effects, counts.lit_points,
                            LitPoints::outside_the_fill, stats);
-    return counts.drawn;
 }
 
 #define PHONGRAST_INSTANTIATE_SETUP(Real)                                                                       \
     template void set_up_triangles<Real>(const SetupInput<Real>&, DrawList<Real>&, RenderStats&,                \
                                          ProgressMonitor&);                                                     \
-    template std::uint64_t set_up_and_fill<Real>(const SetupInput<Real>&, const DirectFill<Real>&, DrawList<Real>&, \
-                                                 RenderStats&, ProgressMonitor&);                               \
+    template void set_up_and_fill<Real>(const SetupInput<Real>&, const DirectFill<Real>&, const RowSplit&, int,  \
+                                        DirectScratch<Real>&, SetupCounts&, ProgressMonitor&);                   \
+    template void add_setup_counts<Real>(const SetupInput<Real>&, const SetupCounts&, RenderStats&);             \
     template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, ChunkVector<FillTriangle<Real>>&, \
                                         ClipVertexStore<Real>&, SetupCounts&, LightVectorsAt<Real>&);
 PHONGRAST_INSTANTIATE_SETUP(float)

@@ -48,6 +48,37 @@ struct SetupCounts {
     std::uint64_t lit_points = 0;  ///< flat triangles or Gouraud corners lit during set-up
 };
 
+/// The image's rows split among several walks of the mesh, one per thread:
+/// part p fills rows [starts[p], starts[p + 1]). Each walk sets up only the
+/// triangles that may reach its rows, and each triangle is counted by
+/// exactly one walk, its owner's (the part of its first corner's row), so the
+/// counts are those of one walk over the whole image.
+struct RowSplit {
+    std::vector<int> starts{0, 0};  ///< parts() + 1 ascending rows: 0 first, the image's rows last
+
+    int parts() const { return static_cast<int>(starts.size()) - 1; }
+    /// The part that counts a triangle whose first corner lies at `row`: the
+    /// part holding the row, the nearest one outside the image, the first for NaN.
+    int owner(double row) const {
+        int part = 0;
+        while (part + 1 < parts() && row >= starts[static_cast<std::size_t>(part) + 1]) ++part;
+        return part;
+    }
+};
+
+/// set_up_and_fill()'s scratch for one walk of the mesh, written for every
+/// triangle: a cache line of its own, apart from the other walks' (two walks
+/// writing one line made two threads barely faster than one).
+template <typename Real>
+struct alignas(64) DirectScratch {
+    ChunkVector<FillTriangle<Real>> draws;  ///< the draws of the one triangle being filled
+    ClipVertexStore<Real> clip_vertices;   ///< its clipped corners
+    LightVectorsAt<Real> vectors;          ///< set-up's light vectors (flat, seed Gouraud)
+    LightVectorsAt<Real> fill_vectors;     ///< the fill kernel's
+    SetupCounts counts;                    ///< the triangles this walk owns (RowSplit::owner)
+    std::uint64_t samples_covered = 0, samples_shaded = 0, values_replaced = 0;  ///< its FillTarget's counts
+};
+
 /// Set-up's output, in mesh order: chunk after chunk of kSetupChunk mesh
 /// triangles, each chunk's draws in mesh order, and for each triangle that
 /// draws something its painter's-order key and where its draws are.
@@ -65,11 +96,11 @@ struct DrawList {
     std::vector<SetupCounts> chunk_counts;
     std::vector<LightVectorsAt<Real>> chunk_vectors;  ///< per chunk, not per thread (see light_vertices())
     std::vector<MappedRecords> chunk_mapped;  ///< chunk_draws' pages mapped so far (record_pages.hpp)
-    /// set_up_and_fill(): the draws of the one triangle being filled (at most
-    /// 6 pieces), its clipped corners and light vectors.
-    ChunkVector<FillTriangle<Real>> direct_draws;
-    ClipVertexStore<Real> direct_clip_vertices;
-    LightVectorsAt<Real> direct_vectors;
+    /// set_up_and_fill(): per walk (RowSplit part), the draws of the one
+    /// triangle being filled (at most 6 pieces), its clipped corners and light vectors.
+    std::vector<DirectScratch<Real>> direct_parts;
+    RowSplit direct_split;                    ///< the walks' rows
+    std::vector<double> direct_split_sample;  ///< split_rows_by_triangles()'s scratch
 };
 
 /// Everything set-up reads.
@@ -111,12 +142,12 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
                       ProgressMonitor& progress);
 
 /// What set_up_and_fill() does with each triangle's draws: fills them into
-/// `target` (the whole image) with `kernel`. `ranked`: the picture depends on
-/// painter's order, so each draw carries its triangle's rank (its painter's
-/// key, then its index in the caller's mesh: `original_triangle`, or the
-/// index itself when null) and the target keeps, per sample, the rank of the
-/// colour written there (FillTarget::rank_keys); else (FillPlan::order_free)
-/// every draw writes what it covers.
+/// `target` (the rows of its part of the image) with `kernel`. `ranked`: the
+/// picture depends on painter's order, so each draw carries its triangle's
+/// rank (its painter's key, then its index in the caller's mesh:
+/// `original_triangle`, or the index itself when null) and the target keeps,
+/// per sample, the rank of the colour written there (FillTarget::rank_keys);
+/// else (FillPlan::order_free) every draw writes what it covers.
 template <typename Real>
 struct DirectFill {
     FillKernel<Real> kernel = nullptr;
@@ -128,16 +159,29 @@ struct DirectFill {
     bool reads_varyings = true;  ///< set-up or the kernel reads the corners' varyings (colours vary)
 };
 
-/// Set-up and fill in one walk of the mesh, on the calling thread: each
-/// triangle set up as set_up_triangles() sets it up, its draws filled at once
-/// and forgotten, so no draw record reaches memory and nothing is sorted or
-/// binned (painter's order is the rank test of `fill`). Adds the triangle
-/// counts and set-up's lighting to `stats` (the fill's counts are in `fill`'s
-/// target) and returns the triangles drawn. Reports progress in pieces of
-/// kSetupChunk triangles, and stops early when the render is cancelled.
+/// Splits `rows` rows into at most `parts` parts holding about as many of
+/// the triangles' first corners each (a sample of up to 4,096 triangles), so
+/// that the walks share the work; every part has at least one row. `sample`
+/// is scratch: with `split`, kept from frame to frame (no allocation per frame).
+void split_rows_by_triangles(const std::vector<Triangle>& triangles, const FrameVector<ScreenVertex>& screen,
+                             int rows, int parts, std::vector<double>& sample, RowSplit& split);
+
+/// Set-up and fill in one walk of the mesh, on the calling thread, for the
+/// rows of part `part` of `split` (fill.target's rows): each triangle that
+/// may reach them set up as set_up_triangles() sets it up, its draws filled
+/// at once and forgotten, so no draw record reaches memory and nothing is
+/// sorted or binned (painter's order is the rank test of `fill`). Adds to
+/// `counts` the triangles this part owns (RowSplit::owner; the fill's counts
+/// are in `fill`'s target). Reports progress in pieces of kSetupChunk
+/// triangles, and stops early when the render is cancelled.
 template <typename Real>
-std::uint64_t set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, DrawList<Real>& draws,
-                              RenderStats& stats, ProgressMonitor& progress);
+void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, const RowSplit& split, int part,
+                     DirectScratch<Real>& scratch, SetupCounts& counts, ProgressMonitor& progress);
+
+/// Adds what set-up counted (set_up_and_fill()'s `counts`) to `stats`: the
+/// triangles and the lighting done.
+template <typename Real>
+void add_setup_counts(const SetupInput<Real>& input, const SetupCounts& counts, RenderStats& stats);
 
 /// Sets up mesh triangle `source`: appends its fill triangles (none, one, or
 /// one per piece of its clipped polygon) to `out` and counts it in `counts`.

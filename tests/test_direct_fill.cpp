@@ -1,10 +1,10 @@
 // The fill in mesh order (fill_in_mesh_order(), fill_driver.hpp): an
-// ambient-only render on one thread sets up and fills each triangle in one
-// walk of the mesh, keeping painter's order by a rank test per sample
-// instead of a sort. It must paint painter's picture bit for bit, with the
-// same counts, whatever the shader, mode, precision, colours, materials,
-// ties of equal depth, clipping, supersampling or mesh order; and it must
-// be the path an ambient-only render on one thread takes.
+// ambient-only render sets up and fills each triangle in a walk of the mesh
+// (one per thread, each over its own rows), keeping painter's order by a
+// rank test per sample instead of a sort. It must paint painter's picture
+// bit for bit, with the same counts, whatever the shader, mode, precision,
+// colours, materials, ties of equal depth, clipping, supersampling, mesh
+// order, threads or walks; and it must be the path an ambient-only render takes.
 #include <algorithm>
 #include <cstdint>
 #include <limits>
@@ -36,6 +36,18 @@ public:
 
 private:
     bool previous_;
+};
+
+/// Splits the fill in mesh order into `walks` walks for one scope (0: one per thread).
+class MeshOrderWalks {
+public:
+    explicit MeshOrderWalks(int walks) : previous_(detail::set_mesh_order_walks(walks)) {}
+    ~MeshOrderWalks() { detail::set_mesh_order_walks(previous_); }
+    MeshOrderWalks(const MeshOrderWalks&) = delete;
+    MeshOrderWalks& operator=(const MeshOrderWalks&) = delete;
+
+private:
+    int previous_;
 };
 
 /// A coloured sphere seen from outside: its back faces lie under its front
@@ -88,36 +100,55 @@ Scene inside_sphere_scene() {
     return scene;
 }
 
-/// Renders `scene` on one thread in mesh order, then on one thread and on
-/// two through painter's sort and bins: the same bits and counts; the first
-/// render must have filled in mesh order, the others not.
+/// Renders `scene` in mesh order on one thread and on two, and in 2, 3 and
+/// 7 walks (rows split by where the triangles are: some walks get few
+/// rows), then on one thread and on two through painter's sort and bins:
+/// the same bits and counts; the mesh-order renders must have filled in
+/// mesh order, the others not.
 void check_painters_picture(const Scene& scene, RenderOptions options) {
-    options.threads = 1;
-    const std::uint64_t before = detail::passes_filled_in_mesh_order();
-    const RenderResult direct = render(scene, options);
     const std::uint64_t passes = options.samples_per_axis > 1 && options.sample_pattern == SamplePattern::rotated_grid
                                      ? std::uint64_t(options.samples_per_axis) * std::uint64_t(options.samples_per_axis)
                                      : 1;
+    options.threads = 1;
+    std::uint64_t before = detail::passes_filled_in_mesh_order();
+    const RenderResult direct = render(scene, options);
     CHECK(detail::passes_filled_in_mesh_order() == before + passes);
     REQUIRE(direct.stats.triangles_drawn > 0);
-    RenderResult sorted;
+    std::vector<RenderResult> walked;
+    for (int threads : {1, 2}) {
+        for (int walks : {0, 2, 3, 7}) {
+            if (threads == 1 && walks == 0) continue;  // `direct`
+            MeshOrderWalks split(walks);
+            options.threads = threads;
+            INFO(threads << " threads, " << walks << " walks");
+            before = detail::passes_filled_in_mesh_order();
+            walked.push_back(render(scene, options));
+            CHECK(detail::passes_filled_in_mesh_order() == before + passes);
+        }
+    }
+    before = detail::passes_filled_in_mesh_order();
+    std::vector<RenderResult> sorted;
     {
         MeshOrderFill forbidden(false);
-        sorted = render(scene, options);
+        for (int threads : {1, 2}) {
+            options.threads = threads;
+            sorted.push_back(render(scene, options));
+        }
     }
-    options.threads = 2;
-    const RenderResult banded = render(scene, options);
-
-    CHECK(detail::passes_filled_in_mesh_order() == before + passes);
-    CHECK(same_bits(direct.image, sorted.image));
-    CHECK(same_bits(direct.image, banded.image));
-    check_same_render_stats(direct.stats, sorted.stats);
-    check_same_render_stats(direct.stats, banded.stats);
+    CHECK(detail::passes_filled_in_mesh_order() == before);
+    for (const RenderResult& result : walked) {
+        CHECK(same_bits(direct.image, result.image));
+        check_same_render_stats(direct.stats, result.stats);
+    }
+    for (const RenderResult& result : sorted) {
+        CHECK(same_bits(direct.image, result.image));
+        check_same_render_stats(direct.stats, result.stats);
+    }
 }
 
 }  // namespace
 
-TEST_CASE("ambient-only on one thread fills in mesh order and paints painter's picture") {
+TEST_CASE("ambient-only fills in mesh order and paints painter's picture") {
     struct Case {
         const char* name;
         Scene scene;
@@ -227,6 +258,11 @@ TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's
             Renderer sorted_renderer(options);
             sorted = sorted_renderer.render(scene);
         }
+        RenderResult walked;
+        {
+            MeshOrderWalks split(3);  // ties compared across the walks' shared ranks
+            walked = direct_renderer.render(scene);
+        }
         detail::set_reorder_min_triangles(std::numeric_limits<std::size_t>::max());
         detail::set_reorder_always(false);
         Renderer plain_renderer(options);
@@ -235,7 +271,9 @@ TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's
         detail::set_reorder_always(true);
         CHECK(same_bits(direct.image, sorted.image));
         CHECK(same_bits(direct.image, plain.image));
+        CHECK(same_bits(direct.image, walked.image));
         check_same_render_stats(direct.stats, sorted.stats);
+        check_same_render_stats(direct.stats, walked.stats);
     }
     detail::set_reorder_min_triangles(previous_min);
     detail::set_reorder_always(previous_always);

@@ -106,6 +106,14 @@ std::vector<Frame> varied_frames() {
     depth.visibility = Visibility::depth_buffer;
     depth.threads = 2;
     frames.push_back({sphere(24, 70, 70, Shader::phong, false), depth, "depth buffer, 2 threads"});
+    // Ambient only: filled in walks of the mesh (fill_driver.hpp), one per thread.
+    for (int threads : {2, 1}) {
+        Scene ambient = sphere(22, 66, 74, Shader::gouraud, threads == 2);
+        ambient.lighting = Lighting::only_ambient();
+        RenderOptions walked = exact;
+        walked.threads = threads;
+        frames.push_back({ambient, walked, "ambient only, filled in mesh order, " + std::to_string(threads) + " thread(s)"});
+    }
     frames.push_back({sphere(16, 64, 80, Shader::phong, false), exact, "the first frame again"});
     return frames;
 }
