@@ -269,7 +269,7 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
     RowSplit& split = draws.direct_split;
     split_rows_by_triangles(scene.mesh.triangles, setup.vertices.screen, rows,
                             forced_walks > 0 ? forced_walks : tbb::this_task_arena::max_concurrency(),
-                            draws.direct_split_sample, split);
+                            draws.direct_split_work, split);
     const std::size_t walks = static_cast<std::size_t>(split.parts());
     if (draws.direct_parts.size() < walks) draws.direct_parts.resize(walks);
     const std::size_t chunks = (scene.mesh.triangles.size() + kSetupChunk - 1) / kSetupChunk;

@@ -1,6 +1,7 @@
 #include "triangle_setup.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include <tbb/parallel_for.h>
@@ -515,25 +516,56 @@ constexpr std::size_t kDirectAhead = 16;
 constexpr double kCoverageReach = 2.0;
 
 void split_rows_by_triangles(const std::vector<Triangle>& triangles, const FrameVector<ScreenVertex>& screen,
-                             int rows, int parts, std::vector<double>& sample, RowSplit& split) {
+                             int rows, int parts, std::vector<double>& work, RowSplit& split) {
     parts = std::max(1, std::min(parts, rows));
     split.starts.assign(1, 0);
     if (parts > 1) {
+        // The work per row, from a sample of triangles: each costs about as
+        // much as kSetupSamples samples at its first corner's row, plus its
+        // area spread evenly over the rows it spans (a difference array).
         constexpr std::size_t kSample = 4096;
+        constexpr double kSetupSamples = 32.0;
         const std::size_t step = std::max<std::size_t>(1, triangles.size() / kSample);
-        sample.clear();
+        work.assign(static_cast<std::size_t>(rows) + 1, 0.0);
+        const double last_row = rows - 1;
         for (std::size_t t = 0; t < triangles.size(); t += step) {
-            const double row = screen[triangles[t][0]].row;
-            if (row >= 0.0 && row < rows) sample.push_back(row);  // NaN and off-image corners left out
+            const ScreenVertex& a = screen[triangles[t][0]];
+            const ScreenVertex& b = screen[triangles[t][1]];
+            const ScreenVertex& c = screen[triangles[t][2]];
+            const double top = std::min({a.row, b.row, c.row}), bottom = std::max({a.row, b.row, c.row});
+            // NaN (a corner not in front of the eye) fails this, as does a triangle off the image.
+            if (!(bottom >= 0.0 && top <= last_row)) continue;
+            const double first = std::clamp(a.row, 0.0, last_row);
+            work[static_cast<std::size_t>(first)] += kSetupSamples;
+            work[static_cast<std::size_t>(first) + 1] -= kSetupSamples;
+            const double area = 0.5 * std::abs((b.column - a.column) * (c.row - a.row) -
+                                               (c.column - a.column) * (b.row - a.row));
+            const std::size_t from = static_cast<std::size_t>(std::max(top, 0.0));
+            const std::size_t to = static_cast<std::size_t>(std::min(bottom, last_row)) + 1;
+            const double per_row = std::min(area, 1e12) / (bottom - top + 1.0);
+            if (!std::isfinite(per_row)) continue;
+            work[from] += per_row;
+            work[to] -= per_row;
         }
-        std::sort(sample.begin(), sample.end());
+        // Per row, then running totals: work[r] = the work of rows [0, r].
+        double density = 0.0, total = 0.0;
+        for (int r = 0; r < rows; ++r) {
+            density += work[static_cast<std::size_t>(r)];
+            total += std::max(density, 0.0);
+            work[static_cast<std::size_t>(r)] = total;
+        }
+        std::size_t row = 0;
         for (int p = 1; p < parts; ++p) {
-            // Equal rows when nothing was sampled inside the image.
-            const double quantile = sample.empty() ? double(rows) * p / parts
-                                                   : sample[sample.size() * static_cast<std::size_t>(p) / parts];
-            const int row = std::max(split.starts.back() + 1, static_cast<int>(quantile));
-            if (row > rows - (parts - p)) break;  // leave a row for each part after it
-            split.starts.push_back(row);
+            // The first row whose running total passes p / parts of the work: equal rows when there is none.
+            const double share = total * p / parts;
+            if (total > 0.0) {
+                while (row < static_cast<std::size_t>(rows) && work[row] <= share) ++row;
+            } else {
+                row = static_cast<std::size_t>(rows) * static_cast<std::size_t>(p) / static_cast<std::size_t>(parts);
+            }
+            const int start = std::max(split.starts.back() + 1, static_cast<int>(row));
+            if (start > rows - (parts - p)) break;  // leave a row for each part after it
+            split.starts.push_back(start);
         }
     }
     split.starts.push_back(rows);

@@ -49,7 +49,7 @@ struct SetupCounts {
 };
 
 /// The image's rows split among several walks of the mesh, one per thread:
-/// part p fills rows [starts[p], starts[p + 1]). Each walk sets up only the
+/// part p fills rows [starts[p], starts[p + 1]) (split_rows_by_triangles()). Each walk sets up only the
 /// triangles that may reach its rows, and each triangle is counted by
 /// exactly one walk, its owner's (the part of its first corner's row), so the
 /// counts are those of one walk over the whole image.
@@ -100,7 +100,7 @@ struct DrawList {
     /// triangle being filled (at most 6 pieces), its clipped corners and light vectors.
     std::vector<DirectScratch<Real>> direct_parts;
     RowSplit direct_split;                    ///< the walks' rows
-    std::vector<double> direct_split_sample;  ///< split_rows_by_triangles()'s scratch
+    std::vector<double> direct_split_work;  ///< split_rows_by_triangles()'s scratch
 };
 
 /// Everything set-up reads.
@@ -159,12 +159,13 @@ struct DirectFill {
     bool reads_varyings = true;  ///< set-up or the kernel reads the corners' varyings (colours vary)
 };
 
-/// Splits `rows` rows into at most `parts` parts holding about as many of
-/// the triangles' first corners each (a sample of up to 4,096 triangles), so
-/// that the walks share the work; every part has at least one row. `sample`
-/// is scratch: with `split`, kept from frame to frame (no allocation per frame).
+/// Splits `rows` rows into at most `parts` parts of about equal work, so
+/// that the walks end together: the work of a sample of up to 4,096
+/// triangles, each a set-up at its first corner's row and its area over the
+/// rows it spans. Every part has at least one row. `work` is scratch: with
+/// `split`, kept from frame to frame (no allocation per frame).
 void split_rows_by_triangles(const std::vector<Triangle>& triangles, const FrameVector<ScreenVertex>& screen,
-                             int rows, int parts, std::vector<double>& sample, RowSplit& split);
+                             int rows, int parts, std::vector<double>& work, RowSplit& split);
 
 /// Set-up and fill in one walk of the mesh, on the calling thread, for the
 /// rows of part `part` of `split` (fill.target's rows): each triangle that
