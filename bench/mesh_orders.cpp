@@ -39,7 +39,7 @@ phongrast::Mesh in_mesh_order(const phongrast::Mesh& mesh, const std::string& or
     if (order == "spatial") {
         phongrast::detail::MeshOrder spatial;
         phongrast::detail::compute_mesh_order(mesh, spatial);
-        return permuted(mesh, spatial.triangle_source, spatial.vertex_target);
+        return permuted(mesh, spatial.triangle_source, phongrast::detail::vertex_targets(spatial));
     }
     if (order == "shuffled") {
         std::mt19937_64 random(2026);

@@ -12,7 +12,9 @@ bool non_zero(const glm::vec3& v) { return v.x != 0.0f || v.y != 0.0f || v.z != 
 
 }  // namespace
 
-EffectSet find_effects(const Scene& scene) {
+EffectSet find_effects(const Scene& scene) { return find_effects(scene, scene.mesh.colors); }
+
+EffectSet find_effects(const Scene& scene, const std::vector<glm::vec3>& colors) {
     EffectSet effects;
     for (const PointLight& light : scene.lights) {
         if (non_zero(light.intensity)) ++effects.active_lights;
@@ -25,7 +27,6 @@ EffectSet find_effects(const Scene& scene) {
     // Bit for bit, not by value: -0 and +0 are equal values, but a kernel
     // that writes colors[0] for every vertex's colour would flip the sign of
     // a zero channel, and images are compared bit for bit.
-    const std::vector<glm::vec3>& colors = scene.mesh.colors;
     for (std::size_t i = 1; i < colors.size() && !effects.varying_colors; ++i) {
         effects.varying_colors = std::memcmp(&colors[i], &colors[0], sizeof(glm::vec3)) != 0;
     }

@@ -125,10 +125,11 @@ void prepare_memory(const FillPlan<Real>& plan, int bands, std::size_t samples, 
 
 template <typename Real>
 FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const EffectSet& effects,
-                         const LightRig<Real>& rig, const KernelTexture* textures) {
+                         const LightRig<Real>& rig, const KernelTexture* textures,
+                         const std::vector<glm::vec3>* vertex_colors) {
     FillPlan<Real> plan;
     plan.constants.textures = textures;
-    const std::vector<glm::vec3>& colors = scene.mesh.colors;
+    const std::vector<glm::vec3>& colors = vertex_colors != nullptr ? *vertex_colors : scene.mesh.colors;
     plan.constants.rig = &rig;
     plan.constants.uniform_color = !effects.varying_colors;
     plan.constants.color = colors.empty() ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[0]);
@@ -319,7 +320,8 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
 
 #define PHONGRAST_INSTANTIATE_FILL_DRIVER(Real)                                                              \
     template FillPlan<Real> plan_fill<Real>(const Scene&, const RenderOptions&, const EffectSet&,                \
-                                            const LightRig<Real>&, const KernelTexture*);                    \
+                                            const LightRig<Real>&, const KernelTexture*,                     \
+                                            const std::vector<glm::vec3>*);                                  \
     template void fill_bins<Real>(const Scene&, const RenderOptions&, const FillPlan<Real>&, const Bins<Real>&,  \
                                   int, int, FillMemory<Real>&, Image&, RenderStats&, ProgressMonitor&);    \
     template bool fills_in_mesh_order<Real>(const FillPlan<Real>&, bool);                                     \

@@ -62,9 +62,11 @@ struct FillPlan {
 /// Chooses the kernel and strategy for the scene, its effects and the options.
 /// `textures`: per material, for a scene with texture maps (the textured
 /// kernels; the order of triangles always matters then); null otherwise.
+/// `colors`: the vertices' colours when not the scene mesh's (CallerVertices).
 template <typename Real>
 FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const EffectSet& effects,
-                         const LightRig<Real>& rig, const KernelTexture* textures = nullptr);
+                         const LightRig<Real>& rig, const KernelTexture* textures = nullptr,
+                         const std::vector<glm::vec3>* colors = nullptr);
 
 /// Fills `image` (resized to rows x columns samples and cleared to the
 /// background) from the bins; adds the samples covered and shaded, the

@@ -68,12 +68,13 @@ void copy_polling(const std::vector<Triangle>& in, std::vector<Triangle>& out, c
 
 /// The copy's triangles: the caller's, in the permutation's order, naming the copy's vertices.
 void copy_triangles(const Mesh& mesh, const MeshOrder& order, std::vector<Triangle>& out) {
+    const std::vector<std::uint32_t> vertex_target = vertex_targets(order);
     out.resize(mesh.triangles.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), kGatherBlock),
                       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t k = range.begin(); k != range.end(); ++k) {
             const Triangle& tri = mesh.triangles[order.triangle_source[k]];
-            out[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+            out[k] = {vertex_target[tri[0]], vertex_target[tri[1]], vertex_target[tri[2]]};
         }
     });
 }
@@ -246,22 +247,29 @@ void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<
         const Triangle& tri = mesh.triangles[order.triangle_source[k]];
         for (int i = 0; i < 3; ++i) indices[3 * k + i] = tri[i];
     }
-    order.vertex_target.resize(vertices);
+    std::vector<std::uint32_t> vertex_target(vertices);
     report();
-    std::size_t used = meshopt_optimizeVertexFetchRemap(order.vertex_target.data(), indices.data(), indices.size(),
+    std::size_t used = meshopt_optimizeVertexFetchRemap(vertex_target.data(), indices.data(), indices.size(),
                                                         vertices);
     report();
-    for (std::uint32_t& target : order.vertex_target) {
+    for (std::uint32_t& target : vertex_target) {
         if (target == ~0u) target = static_cast<std::uint32_t>(used++);
     }
     order.vertex_source.resize(vertices);
-    for (std::size_t v = 0; v < vertices; ++v) order.vertex_source[order.vertex_target[v]] = static_cast<std::uint32_t>(v);
+    for (std::size_t v = 0; v < vertices; ++v) order.vertex_source[vertex_target[v]] = static_cast<std::uint32_t>(v);
     ++order.permutations_computed;
+}
+
+std::vector<std::uint32_t> vertex_targets(const MeshOrder& order) {
+    std::vector<std::uint32_t> target(order.vertex_source.size());
+    for (std::size_t v = 0; v < target.size(); ++v) target[order.vertex_source[v]] = static_cast<std::uint32_t>(v);
+    return target;
 }
 
 void list_vertex_corners(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll) {
     order.vertex_corners_made = false;  // until finished (a cancel may stop it halfway)
     const std::size_t triangles = mesh.triangles.size(), vertices = mesh.positions.size();
+    const std::vector<std::uint32_t> vertex_target = vertex_targets(order);
     std::vector<std::uint32_t> triangle_target(triangles);
     for (std::size_t k = 0; k < triangles; ++k) triangle_target[order.triangle_source[k]] = static_cast<std::uint32_t>(k);
     if (poll) poll();
@@ -274,7 +282,7 @@ void list_vertex_corners(const Mesh& mesh, MeshOrder& order, const std::function
     first.assign(vertices + 1, 0);
     for (std::size_t t = 0; t < triangles; ++t) {
         if (poll && t % kPollEvery == 0) poll();
-        for (std::uint32_t index : mesh.triangles[t]) ++first[order.vertex_target[index] + 1];
+        for (std::uint32_t index : mesh.triangles[t]) ++first[vertex_target[index] + 1];
     }
     for (std::size_t v = 1; v <= vertices; ++v) first[v] += first[v - 1];
     resize_polling(corners, 3 * triangles, poll);
@@ -283,7 +291,7 @@ void list_vertex_corners(const Mesh& mesh, MeshOrder& order, const std::function
         if (poll && t % kPollEvery == 0) poll();
         const Triangle& tri = mesh.triangles[t];
         for (std::uint32_t corner = 0; corner < 3; ++corner) {
-            corners[first[order.vertex_target[tri[corner]]]++] = triangle_target[t] << 2 | corner;
+            corners[first[vertex_target[tri[corner]]]++] = triangle_target[t] << 2 | corner;
         }
     }
     for (std::size_t v = vertices; v > 0; --v) first[v] = first[v - 1];
@@ -297,6 +305,7 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
         if (poll) poll();
     };
     order.reordered = false;  // the id output and painter's ties take the pipeline's indices as they are
+    order.caller_mesh = nullptr;
     if (!should_reorder(scene, options, one_off)) return scene;
     const Mesh& mesh = scene.mesh;
     if (!same_mesh_as_before(mesh, order)) {
@@ -305,7 +314,6 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
         if (order.caller_order_is_local) {
             // Remembered as this mesh's (same_mesh_as_before() then holds), with no permutation.
             order.triangle_source.clear();
-            order.vertex_target.clear();
             order.vertex_source.clear();
             order.vertex_corners_made = false;
             order.triangles_copied = false;
@@ -326,16 +334,31 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
     if (order.caller_order_is_local) return scene;
     // The copy, from the caller's arrays as they are now.
     order.reordered = true;
+    order.caller_mesh = &mesh;
     copy_all_but_mesh(scene, order.scene);
     Mesh& out = order.scene.mesh;
     report();
-    gather(mesh.positions, order.vertex_source, out.positions, poll);
-    gather(mesh.colors, order.vertex_source, out.colors, poll);
+    // The normals the pipeline would compute from the caller's mesh (all of
+    // them, or where a user normal is zero: "compute this one") are computed
+    // here, from a copy of the vertex arrays. Otherwise the copy holds no
+    // vertex array: the vertex stage reads the caller's (CallerVertices), and
+    // a shuffled mesh's 24 bytes per triangle are not held twice.
+    const bool needed = needs_normals(scene, options);
+    const bool computes_normals = needed && (mesh.normals.empty() || has_zero_normal(mesh.normals));
+    order.vertex_arrays_copied = computes_normals;
+    if (computes_normals) {
+        gather(mesh.positions, order.vertex_source, out.positions, poll);
+        gather(mesh.colors, order.vertex_source, out.colors, poll);
+    } else {
+        std::vector<glm::dvec3>().swap(out.positions);
+        std::vector<glm::vec3>().swap(out.colors);
+        std::vector<glm::vec3>().swap(out.normals);
+    }
     report();
     // The copy's triangles depend on the caller's triangles and the
     // permutation only: made again when the caller's differ from the snapshot
     // they were made from (a sequential comparison, where making them reads
-    // the caller's triangles and vertex_target at random), else kept. The
+    // the caller's triangles and the vertex targets at random), else kept. The
     // corner list, made for those triangles, is made again with them.
     if (!order.triangles_copied || !same_triangles(mesh.triangles, order.triangles_snapshot)) {
         order.triangles_copied = false;  // until both are whole (a cancel may stop it halfway)
@@ -347,19 +370,12 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
         order.triangles_copied = true;
     }
     report();
-    // The normals the pipeline would compute from the caller's mesh (all of
-    // them, or where a user normal is zero: "compute this one"), computed here
-    // with the caller's mesh's bits. The vertex stage then finds no zero
-    // normal to compute but where every order computes zero (a vertex whose
-    // faces all have zero length: the sums' order cannot matter).
-    const bool needed = needs_normals(scene, options);
-    if (needed && mesh.normals.empty()) {
+    // Computed normals, with the caller's mesh's bits. The vertex stage then
+    // finds no zero normal to compute but where every order computes zero (a
+    // vertex whose faces all have zero length: the sums' order cannot matter).
+    if (computes_normals) {
         normals_in_caller_order(mesh, order, poll);
-    } else if (needed && has_zero_normal(mesh.normals)) {
-        normals_in_caller_order(mesh, order, poll);
-        keep_given_normals(mesh.normals, order.vertex_source, out.normals);
-    } else {
-        gather(mesh.normals, order.vertex_source, out.normals, poll);
+        if (!mesh.normals.empty()) keep_given_normals(mesh.normals, order.vertex_source, out.normals);
     }
     // Contract version 2's per-triangle attributes follow their triangles.
     out.texcoords = mesh.texcoords;

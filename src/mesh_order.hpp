@@ -18,8 +18,9 @@
 // mesh's bits while every read stays local.
 //
 // What a Renderer keeps: the permutation, computed once per mesh (the
-// expensive part: a spatial sort), and the reordered copy. The copy's
-// vertex arrays are gathered from the caller's on every frame; its triangles
+// expensive part: a spatial sort), and the reordered copy. The vertex stage
+// gathers the caller's vertex arrays through the permutation on every frame
+// (a copy of them is made only when normals are computed here); its triangles
 // (whose making reads the caller's at random) are kept while the caller's
 // compare equal, every frame, to a snapshot of those they were made from. So
 // a mesh edited in place between frames is never drawn stale: only the
@@ -36,6 +37,7 @@
 #include <vector>
 
 #include "normals.hpp"
+#include "vertex_stage.hpp"
 #include "phongrast/render.hpp"
 
 namespace phongrast::detail {
@@ -76,8 +78,9 @@ double local_order_misses(const Mesh& mesh);
 struct MeshOrder {
     /// Internal triangle -> the caller's triangle (empty: not reordered).
     std::vector<std::uint32_t> triangle_source;
-    /// The caller's vertex -> internal vertex, and its inverse.
-    std::vector<std::uint32_t> vertex_target, vertex_source;
+    /// Internal vertex -> the caller's vertex (its inverse, vertex_targets(),
+    /// is made when needed and not kept: 4 bytes per vertex).
+    std::vector<std::uint32_t> vertex_source;
     /// What the permutation was computed for (only the speed depends on it).
     const void* positions_data = nullptr;
     const void* triangles_data = nullptr;
@@ -88,10 +91,24 @@ struct MeshOrder {
     /// This frame renders `scene` (below) rather than the caller's.
     bool reordered = false;
 
+    /// This frame's copy holds the vertex arrays (gathered from the caller's):
+    /// only when normals are computed here (from the copy's positions); else
+    /// it holds triangles only, and the vertex stage reads the caller's arrays
+    /// through vertex_source (caller_vertices()).
+    bool vertex_arrays_copied = false;
+    /// The caller's mesh of the frame being rendered (while reordered).
+    const Mesh* caller_mesh = nullptr;
+
     /// The caller's index of each triangle the pipeline sees, or null when it sees the caller's mesh.
     const std::uint32_t* original_triangles() const { return reordered ? triangle_source.data() : nullptr; }
-    /// The caller's scene with the mesh in internal order: vertex arrays
-    /// gathered every frame, triangles made when the caller's changed.
+    /// Where the vertex stage reads the vertex arrays: the caller's, when the copy holds triangles only.
+    CallerVertices caller_vertices() const {
+        return reordered && !vertex_arrays_copied ? CallerVertices{caller_mesh, vertex_source.data()}
+                                                  : CallerVertices{};
+    }
+    /// The caller's scene with the mesh in internal order: triangles made
+    /// when the caller's changed; vertex arrays gathered every frame when
+    /// vertex_arrays_copied, else empty.
     Scene scene;
     NormalsScratch normals_scratch;
     /// The caller's triangles as they were when the copy's (scene.mesh.triangles)
@@ -136,8 +153,11 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
                                    MeshOrder& order, const std::function<void()>& poll = nullptr);
 
 /// The permutation alone, for tests and benchmarks: fills order's
-/// triangle_source, vertex_target and vertex_source for `mesh`.
+/// triangle_source and vertex_source for `mesh`.
 void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll = nullptr);
+
+/// The caller's vertex -> internal vertex: the inverse of order.vertex_source.
+std::vector<std::uint32_t> vertex_targets(const MeshOrder& order);
 
 /// order.vertex_corners for `mesh` (the caller's) and order's permutation:
 /// each internal vertex's corners, internal triangles, listed by ascending

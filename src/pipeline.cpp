@@ -98,12 +98,16 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                  const PassOutput& out, ProgressMonitor& progress) {
     // Passes are the image's size or a whole multiple of it (supersampling).
     View view(scene.camera, rows, columns, sample_offset, std::max(1, rows / scene.image.rows));
-    const EffectSet effects = find_effects(scene);
+    // The vertices' colours: the mesh's, or the caller's when the copy holds only triangles.
+    const std::vector<glm::vec3>& colors =
+        out.caller_vertices.mesh != nullptr ? out.caller_vertices.mesh->colors : scene.mesh.colors;
+    const EffectSet effects = find_effects(scene, colors);
     stats.effects = effects;
 
     // Vertex stage.
     const bool need_normals = effects.normals || !options.specialize_effects || out.aov_planes.normal;
-    transform_vertices(scene.mesh, view, need_normals, memory.vertex_stage, memory.vertices, progress);
+    transform_vertices(scene.mesh, out.caller_vertices, view, need_normals, memory.vertex_stage, memory.vertices,
+                       progress);
     place_near_plane(view, memory.vertices.screen);
     const HiddenBackFaces cull = back_faces_to_cull(scene, options, view, memory.vertices);
     stats.back_faces_culled = cull != HiddenBackFaces::unknown;
@@ -131,7 +135,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     const bool in_parts = textured && scene.shader != Shader::phong;
     if (in_parts) build_part_shaders(scene, *assembled, view, point_shader, memory);
     FillPlan<Real> fill_plan = plan_fill(scene, options, effects, several ? memory.surface_rigs[0] : memory.rig,
-                                         textured ? memory.surface_textures.data() : nullptr);
+                                         textured ? memory.surface_textures.data() : nullptr, &colors);
     if (several) fill_plan.order_free = false;  // one colour per material, not one for all
     const VertexMaterials<Real> vertex_materials{several ? assembled->vertex_surfaces.data() : nullptr,
                                                  several ? memory.surface_shaders.data() : nullptr};

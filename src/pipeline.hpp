@@ -54,6 +54,8 @@ struct PassOutput {
     /// Mesh order hook: the caller's index of each triangle when the scene's mesh is a reordered copy
     /// (mesh_order.hpp), for painter's ties and the id output; null: the mesh is the caller's.
     const std::uint32_t* original_triangle = nullptr;
+    /// Mesh order hook: where the vertex arrays are when the reordered copy holds only triangles.
+    CallerVertices caller_vertices;
 };
 
 /// Renders `scene` at rows x columns samples, each sample `sample_offset`

@@ -58,8 +58,8 @@ struct RendererState final : PassRenderer {
 
     void render_pass(int rows, int columns, glm::dvec2 sample_offset, RenderStats& stats, Image& image) override {
         progress->set_pass(passes_done++, passes);
-        const PassOutput out{image, aov_planes, aov_samples,
-                             mesh_order.original_triangles()};
+        const PassOutput out{image, aov_planes, aov_samples, mesh_order.original_triangles(),
+                             mesh_order.caller_vertices()};
         if (options.precision == Precision::double_float) {
             detail::render_pass(*scene, assembled, options, rows, columns, sample_offset, twice, stats, out,
                                 *progress);

@@ -51,12 +51,24 @@ struct VertexStageMemory {
     std::vector<LightVectorsAt<Real>> block_vectors;  ///< one per block of vertices lit
 };
 
+/// Where the vertex stage reads each vertex's position, colour and normal
+/// when not in the rendered mesh: a reordered copy (mesh_order.hpp) that
+/// holds only triangles leaves them in the caller's mesh, and rendered
+/// vertex i is the caller's vertex source[i]. Gathered here, once per frame,
+/// instead of into a copy that would hold them twice.
+struct CallerVertices {
+    const Mesh* mesh = nullptr;             ///< null: the rendered mesh's own arrays
+    const std::uint32_t* source = nullptr;  ///< per rendered vertex, the caller's
+};
+
 /// Transforms and projects every vertex; computes normals when the mesh has
-/// none and `need_normals` (an ambient-only scene never looks at one).
+/// none and `need_normals` (an ambient-only scene never looks at one). With
+/// `caller` set, reads the caller's arrays instead (which then have normals
+/// to use as they are, or `need_normals` is false: mesh_order.cpp sees to it).
 /// Reports progress, and stops early when the render is cancelled.
 template <typename Real>
-void transform_vertices(const Mesh& mesh, const View& view, bool need_normals, VertexStageMemory<Real>& memory,
-                        TransformedVertices<Real>& out, ProgressMonitor& progress);
+void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const View& view, bool need_normals,
+                        VertexStageMemory<Real>& memory, TransformedVertices<Real>& out, ProgressMonitor& progress);
 
 /// An OpenCV camera's near plane: 1e-4 x the largest z_c of the vertices
 /// (`screen`, from transform_vertices()); other cameras' is set by View.

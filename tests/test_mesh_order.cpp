@@ -16,6 +16,7 @@
 
 #include "mesh_order.hpp"
 #include "test_meshes.hpp"
+#include "same_render_stats.hpp"
 #include "test_render_modes.hpp"
 
 using namespace phongrast;
@@ -142,17 +143,18 @@ TEST_CASE("the permutation is a real one: a shuffled mesh is renumbered") {
     detail::MeshOrder order;
     detail::compute_mesh_order(mesh, order);
     REQUIRE(order.triangle_source.size() == mesh.triangles.size());
-    REQUIRE(order.vertex_target.size() == mesh.positions.size());
+    const std::vector<std::uint32_t> target = detail::vertex_targets(order);
+    REQUIRE(target.size() == mesh.positions.size());
     std::vector<std::uint32_t> sorted = order.triangle_source;
     std::sort(sorted.begin(), sorted.end());
     for (std::size_t t = 0; t < sorted.size(); ++t) REQUIRE(sorted[t] == t);
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) REQUIRE(order.vertex_source[order.vertex_target[v]] == v);
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) REQUIRE(order.vertex_source[target[v]] == v);
     std::size_t moved = 0;
     for (std::size_t t = 0; t < sorted.size(); ++t) moved += order.triangle_source[t] != t;
     CHECK(moved > mesh.triangles.size() / 2);
     // The first triangle's vertices are the first three (numbered by first use).
     const Triangle& first = mesh.triangles[order.triangle_source[0]];
-    for (std::uint32_t index : first) CHECK(order.vertex_target[index] < 3);
+    for (std::uint32_t index : first) CHECK(target[index] < 3);
 }
 
 TEST_CASE("the locality test tells a generator's order and the spatial one from a shuffled one") {
@@ -170,9 +172,10 @@ TEST_CASE("the locality test tells a generator's order and the spatial one from 
     detail::MeshOrder order;
     detail::compute_mesh_order(mixed, order);
     Mesh spatial = mixed;
+    const std::vector<std::uint32_t> target = detail::vertex_targets(order);
     for (std::size_t k = 0; k < mixed.triangles.size(); ++k) {
         const Triangle& tri = mixed.triangles[order.triangle_source[k]];
-        spatial.triangles[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+        spatial.triangles[k] = {target[tri[0]], target[tri[1]], target[tri[2]]};
     }
     const double reordered = detail::local_order_misses(spatial);
     INFO("reordered: " << reordered);
@@ -210,6 +213,96 @@ TEST_CASE("a reordered mesh renders the same bits in every shader, mode and extr
                 }
             }
         }
+    }
+}
+
+TEST_CASE("a copy holding only triangles (the caller's vertex arrays read through the permutation) renders the same bits") {
+    // Normals given, or not needed (ambient only, no normal output): nothing
+    // is computed from the copy's positions, so the copy keeps no vertex
+    // array and the vertex stage gathers the caller's (CallerVertices).
+    struct Variant {
+        const char* name;
+        bool given_normals;
+        Lighting lighting;
+        AovRequest aovs;
+    };
+    AovRequest no_normal = AovRequest::all();
+    no_normal.normal = false;
+    const Variant variants[] = {{"normals given, full lighting, every output", true, Lighting::full(), AovRequest::all()},
+                                {"no normals, ambient only", false, Lighting::only_ambient(), no_normal},
+                                {"normals given, ambient only", true, Lighting::only_ambient(), AovRequest{}}};
+    for (const Case& c : cases()) {
+        for (const Variant& variant : variants) {
+            Scene scene = sphere_scene(c.mesh, c.eye);
+            if (variant.given_normals) scene.mesh.normals = calculate_normals(scene.mesh);
+            scene.lighting = variant.lighting;
+            {
+                ReorderThreshold always(0);
+                detail::MeshOrder order;
+                RenderOptions options;
+                options.aovs = variant.aovs;
+                const Scene& drawn = detail::scene_in_render_order(scene, options, false, order);
+                INFO(c.name << ", " << variant.name);
+                REQUIRE(&drawn == &order.scene);
+                CHECK(drawn.mesh.positions.empty());
+                CHECK(drawn.mesh.colors.empty());
+                CHECK(drawn.mesh.normals.empty());
+                CHECK(order.caller_vertices().mesh == &scene.mesh);
+                CHECK(order.caller_vertices().source == order.vertex_source.data());
+            }
+            for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+                for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+                    for (int threads : {1, 2}) {
+                        scene.shader = shader;
+                        RenderOptions options = mode.options;
+                        options.aovs = variant.aovs;
+                        options.threads = threads;
+                        RenderResult today, reordered;
+                        {
+                            ReorderThreshold never(kNever);
+                            today = render(scene, options);
+                        }
+                        {
+                            ReorderThreshold always(0);
+                            reordered = render(scene, options);
+                        }
+                        INFO(c.name << ", " << variant.name << ", " << to_string(shader) << ", " << mode.name << ", "
+                                    << threads << " thread(s)");
+                        REQUIRE(today.stats.triangles_drawn > 0);
+                        CHECK(same_bits(today.image, reordered.image));
+                        CHECK(same_aovs(today.aovs, reordered.aovs));
+                        check_same_render_stats(today.stats, reordered.stats);
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("a Renderer switching between a copy with and without vertex arrays draws what a fresh render draws") {
+    // Full lighting without normals computes them from a copy of the vertex
+    // arrays; ambient only, or given normals, reads the caller's: frame
+    // after frame in one Renderer, each way after the other.
+    ReorderThreshold always(0);
+    Scene scene = sphere_scene(shuffled_vertices(shuffled_faces(test_meshes::icosphere(11, 0.08), 16), 17));
+    scene.shader = Shader::phong;
+    Renderer renderer;
+    const std::vector<glm::vec3> normals = calculate_normals(scene.mesh);
+    for (int frame = 0; frame < 6; ++frame) {
+        scene.lighting = frame % 3 == 1 ? Lighting::only_ambient() : Lighting::full();
+        if (frame % 3 == 2) {
+            scene.mesh.normals = normals;
+        } else {
+            scene.mesh.normals.clear();
+        }
+        for (glm::vec3& colour : scene.mesh.colors) colour = glm::vec3(1.0f) - colour;
+        RenderResult expected;
+        {
+            ReorderThreshold never(kNever);
+            expected = render(scene);
+        }
+        INFO("frame " << frame);
+        CHECK(same_bits(renderer.render(scene).image, expected.image));
     }
 }
 
@@ -299,7 +392,7 @@ TEST_CASE("the permutation is computed once per mesh, again for another mesh") {
     scene.mesh.positions[0] += glm::dvec3(0.01);
     detail::scene_in_render_order(scene, options, false, order);
     CHECK(order.permutations_computed == 1);
-    CHECK(order.scene.mesh.positions[order.vertex_target[0]] == scene.mesh.positions[0]);
+    CHECK(order.scene.mesh.positions[detail::vertex_targets(order)[0]] == scene.mesh.positions[0]);
     // Another mesh of the same size: a new permutation.
     scene.mesh = shuffled_faces(test_meshes::icosphere(11, 0.08), 15);
     detail::scene_in_render_order(scene, options, false, order);
@@ -320,9 +413,10 @@ TEST_CASE("the copy's triangles are kept while the caller's compare equal, made 
     // once triangles moved: any permutation gives the same picture).
     const auto expected_copy = [&] {
         std::vector<Triangle> copy(scene.mesh.triangles.size());
+        const std::vector<std::uint32_t> target = detail::vertex_targets(order);
         for (std::size_t k = 0; k < copy.size(); ++k) {
             const Triangle& tri = scene.mesh.triangles[order.triangle_source[k]];
-            copy[k] = {order.vertex_target[tri[0]], order.vertex_target[tri[1]], order.vertex_target[tri[2]]};
+            copy[k] = {target[tri[0]], target[tri[1]], target[tri[2]]};
         }
         return copy;
     };

@@ -114,7 +114,8 @@ RenderOptions normal_output() {
 std::vector<glm::vec3> expected_normals(const Mesh& mesh, const detail::MeshOrder& order) {
     const std::vector<glm::vec3> caller = calculate_normals(mesh);
     std::vector<glm::vec3> out(caller.size());
-    for (std::size_t v = 0; v < caller.size(); ++v) out[order.vertex_target[v]] = caller[v];
+    const std::vector<std::uint32_t> target = detail::vertex_targets(order);
+    for (std::size_t v = 0; v < caller.size(); ++v) out[target[v]] = caller[v];
     return out;
 }
 
@@ -147,9 +148,10 @@ TEST_CASE("a reordered mesh's computed normals have the caller's order's bits at
     detail::MeshOrder order;
     const Scene scene = scene_of(awkward.mesh);
     const std::vector<glm::vec3>& normals = detail::scene_in_render_order(scene, normal_output(), false, order).mesh.normals;
-    CHECK(std::abs(normals[order.vertex_target[awkward.sheet]].z) == 1.0f);
-    CHECK(normals[order.vertex_target[awkward.point]] == glm::vec3(0.0f));
-    CHECK(normals[order.vertex_target[awkward.unreferenced]] == glm::vec3(0.0f));
+    const std::vector<std::uint32_t> target = detail::vertex_targets(order);
+    CHECK(std::abs(normals[target[awkward.sheet]].z) == 1.0f);
+    CHECK(normals[target[awkward.point]] == glm::vec3(0.0f));
+    CHECK(normals[target[awkward.unreferenced]] == glm::vec3(0.0f));
 }
 
 TEST_CASE("the corner list names each vertex's corners in the caller's order of triangles") {
@@ -165,6 +167,7 @@ TEST_CASE("the corner list names each vertex's corners in the caller's order of 
     REQUIRE(list.first.back() == 3 * mesh.triangles.size());
     REQUIRE(list.corners.size() == 3 * mesh.triangles.size());
     std::vector<bool> seen(4 * mesh.triangles.size(), false);
+    const std::vector<std::uint32_t> target = detail::vertex_targets(order);
     for (std::size_t vertex = 0; vertex < mesh.positions.size(); ++vertex) {
         std::uint64_t previous = 0;  // caller's triangle * 4 + corner, + 1
         for (std::uint32_t k = list.first[vertex]; k < list.first[vertex + 1]; ++k) {
@@ -175,7 +178,7 @@ TEST_CASE("the corner list names each vertex's corners in the caller's order of 
             REQUIRE_FALSE(seen[entry]);
             seen[entry] = true;
             const std::uint32_t original = order.triangle_source[triangle];
-            REQUIRE(order.vertex_target[mesh.triangles[original][corner]] == vertex);
+            REQUIRE(target[mesh.triangles[original][corner]] == vertex);
             const std::uint64_t rank = std::uint64_t(original) * 4 + corner + 1;
             REQUIRE(rank > previous);  // ascending caller's triangle, then corner
             previous = rank;
@@ -273,8 +276,9 @@ TEST_CASE("given normals with zeros (computed there) render the same bits reorde
         detail::MeshOrder order;
         const Mesh& copy = detail::scene_in_render_order(scene, normal_output(), false, order).mesh;
         const std::vector<glm::vec3> copy_order = calculate_normals(copy);
+        const std::vector<std::uint32_t> target = detail::vertex_targets(order);
         for (std::size_t v = 0; v < given.size(); ++v) {
-            const bool differs = std::memcmp(&copy_order[order.vertex_target[v]], &computed[v], sizeof(glm::vec3)) != 0;
+            const bool differs = std::memcmp(&copy_order[target[v]], &computed[v], sizeof(glm::vec3)) != 0;
             order_dependent += differs;
             if (differs || v % 10 == 0) given[v] = glm::vec3(0.0f);
         }
@@ -287,8 +291,9 @@ TEST_CASE("given normals with zeros (computed there) render the same bits reorde
         detail::MeshOrder order;
         const Mesh& copy = detail::scene_in_render_order(scene, normal_output(), false, order).mesh;
         std::vector<glm::vec3> expected(given.size());
+        const std::vector<std::uint32_t> target = detail::vertex_targets(order);
         for (std::size_t v = 0; v < given.size(); ++v) {
-            expected[order.vertex_target[v]] = given[v] != glm::vec3(0.0f) ? given[v] : computed[v];
+            expected[target[v]] = given[v] != glm::vec3(0.0f) ? given[v] : computed[v];
         }
         CHECK(same_bits(copy.normals, expected));
         CHECK(order.vertex_corners_made);

@@ -35,7 +35,7 @@ struct SetUpOne {
         pd::VertexStageMemory<float> memory;
         const phongrast::ProgressCallback no_reports;
         pd::ProgressMonitor progress(no_reports);
-        pd::transform_vertices(scene.mesh, view, true, memory, vertices, progress);
+        pd::transform_vertices(scene.mesh, pd::CallerVertices{}, view, true, memory, vertices, progress);
         pd::LightRig<float> rig;
         pd::build_light_rig(scene, view.frame, rig);
         const pd::PointShader<float> shader{&rig, effects, true};
