@@ -26,28 +26,28 @@ using test_render_modes::same_bits;
 
 namespace {
 
-/// Allows or forbids the fill in mesh order for one scope.
-class MeshOrderFill {
+/// Sets one of the fill's test switches (fill_driver.hpp) for one scope, then puts back what it was.
+template <typename T>
+class ScopedSwitch {
 public:
-    explicit MeshOrderFill(bool allowed) : previous_(detail::set_fill_in_mesh_order_allowed(allowed)) {}
-    ~MeshOrderFill() { detail::set_fill_in_mesh_order_allowed(previous_); }
-    MeshOrderFill(const MeshOrderFill&) = delete;
-    MeshOrderFill& operator=(const MeshOrderFill&) = delete;
+    ScopedSwitch(T (*set)(T), T value) : set_(set), previous_(set(value)) {}
+    ~ScopedSwitch() { set_(previous_); }
+    ScopedSwitch(const ScopedSwitch&) = delete;
+    ScopedSwitch& operator=(const ScopedSwitch&) = delete;
 
 private:
-    bool previous_;
+    T (*set_)(T);
+    T previous_;
 };
 
-/// Splits the fill in mesh order into `walks` walks for one scope (0: one per thread).
-class MeshOrderWalks {
-public:
-    explicit MeshOrderWalks(int walks) : previous_(detail::set_mesh_order_walks(walks)) {}
-    ~MeshOrderWalks() { detail::set_mesh_order_walks(previous_); }
-    MeshOrderWalks(const MeshOrderWalks&) = delete;
-    MeshOrderWalks& operator=(const MeshOrderWalks&) = delete;
+/// Allows or forbids the fill in mesh order.
+struct MeshOrderFill : ScopedSwitch<bool> {
+    explicit MeshOrderFill(bool allowed) : ScopedSwitch<bool>(detail::set_fill_in_mesh_order_allowed, allowed) {}
+};
 
-private:
-    int previous_;
+/// Splits the fill in mesh order into `walks` walks (0: one per thread).
+struct MeshOrderWalks : ScopedSwitch<int> {
+    explicit MeshOrderWalks(int walks) : ScopedSwitch<int>(detail::set_mesh_order_walks, walks) {}
 };
 
 /// A coloured sphere seen from outside: its back faces lie under its front
