@@ -532,8 +532,9 @@ void split_rows_by_triangles(const std::vector<Triangle>& triangles, const Frame
             const ScreenVertex& a = screen[triangles[t][0]];
             const ScreenVertex& b = screen[triangles[t][1]];
             const ScreenVertex& c = screen[triangles[t][2]];
+            // Left out: a corner not in front of the eye (NaN) and a triangle off the image.
+            if (!(std::isfinite(a.row) && std::isfinite(b.row) && std::isfinite(c.row))) continue;
             const double top = std::min({a.row, b.row, c.row}), bottom = std::max({a.row, b.row, c.row});
-            // NaN (a corner not in front of the eye) fails this, as does a triangle off the image.
             if (!(bottom >= 0.0 && top <= last_row)) continue;
             const double first = std::clamp(a.row, 0.0, last_row);
             work[static_cast<std::size_t>(first)] += kSetupSamples;
