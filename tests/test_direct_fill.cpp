@@ -296,3 +296,43 @@ TEST_CASE("full lighting, extra outputs and the depth buffer do not fill in mesh
     render(scene, depth_buffer);
     CHECK(detail::passes_filled_in_mesh_order() == before);
 }
+
+TEST_CASE("the rows are split into parts of at least one row each, in order, whatever the triangles") {
+    // Triangles anywhere: on the image, off it, behind the eye (NaN rows), huge.
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> place(-50.0, 150.0);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    detail::FrameVector<detail::ScreenVertex> screen;
+    std::vector<Triangle> triangles;
+    for (std::uint32_t k = 0; k < 900; ++k) {
+        const double row = k % 7 == 0 ? nan : k % 11 == 0 ? 1e300 : place(random);
+        screen.push_back({place(random), row, 1.0});
+        if (k >= 2) triangles.push_back({k - 2, k - 1, k});
+    }
+    std::vector<double> work;
+    detail::RowSplit split;
+    for (int rows : {1, 2, 3, 7, 100, 1000}) {
+        for (int parts : {1, 2, 3, 7, 16}) {
+            INFO(rows << " rows, " << parts << " parts");
+            detail::split_rows_by_triangles(triangles, screen, rows, parts, work, split);
+            REQUIRE(split.parts() >= 1);
+            CHECK(split.parts() <= std::min(rows, parts));
+            CHECK(split.starts.front() == 0);
+            CHECK(split.starts.back() == rows);
+            for (int p = 0; p < split.parts(); ++p) CHECK(split.starts[p] < split.starts[p + 1]);
+            // Every row has one owner, and NaN (a corner not in front of the eye) the first part.
+            CHECK(split.owner(nan) == 0);
+            for (int row = 0; row < rows; ++row) {
+                const int owner = split.owner(row + 0.5);
+                REQUIRE(owner >= 0);
+                REQUIRE(owner < split.parts());
+                CHECK(split.starts[owner] <= row);
+                CHECK(row < split.starts[owner + 1]);
+            }
+        }
+    }
+    // No triangle on the image: equal parts.
+    std::vector<Triangle> none;
+    detail::split_rows_by_triangles(none, screen, 100, 4, work, split);
+    CHECK(split.starts == std::vector<int>{0, 25, 50, 75, 100});
+}
