@@ -295,8 +295,7 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
         fill.original_triangle = original_triangle;
         fill.ranked = ranked;
         fill.reads_varyings = !plan.constants.uniform_color;
-        scratch.counts = SetupCounts{};
-        set_up_and_fill(setup, fill, split, static_cast<int>(walk), scratch, scratch.counts, progress);
+        set_up_and_fill(setup, fill, split, static_cast<int>(walk), scratch, progress);
         scratch.samples_covered = target.covered;
         scratch.samples_shaded = target.samples;
         scratch.values_replaced = target.replaced;

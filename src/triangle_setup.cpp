@@ -499,11 +499,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
         progress.piece_done();
     });
     progress.throw_if_cancelled();
-    for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-        add_counts(draws.chunk_counts[chunk], stats);
-        count_term_evaluations(input.scene, input.options, input.shader.effects, draws.chunk_counts[chunk].lit_points,
-                               LitPoints::outside_the_fill, stats);
-    }
+    for (std::size_t chunk = 0; chunk < chunks; ++chunk) add_setup_counts(input, draws.chunk_counts[chunk], stats);
 }
 
 /// How many triangles ahead set_up_and_fill() asks for what it will read.
@@ -574,7 +570,7 @@ void split_rows_by_triangles(const std::vector<Triangle>& triangles, const Frame
 
 template <typename Real>
 void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, const RowSplit& split, int part,
-                     DirectScratch<Real>& scratch, SetupCounts& counts, ProgressMonitor& progress) {
+                     DirectScratch<Real>& scratch, ProgressMonitor& progress) {
     const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
     const std::size_t chunks = (triangles.size() + kSetupChunk - 1) / kSetupChunk;
     const FrameVector<ScreenVertex>& screen = input.vertices.screen;
@@ -583,8 +579,9 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     out.reserve(8);  // a clipped triangle's fan has at most 6 pieces: no allocation per triangle
     ClipVertexStore<Real>& clip_vertices = scratch.clip_vertices;
     // The triangles this part owns are counted; the others it sets up only to fill their rows here.
+    scratch.counts = SetupCounts{};
     SetupCounts counted_elsewhere;
-    TriangleSetup<Real> owned_setup(input, out, clip_vertices, counts, scratch.vectors);
+    TriangleSetup<Real> owned_setup(input, out, clip_vertices, scratch.counts, scratch.vectors);
     TriangleSetup<Real> shared_setup(input, out, clip_vertices, counted_elsewhere, scratch.vectors);
     const bool whole_image = split.parts() == 1;
     const std::size_t part_index = static_cast<std::size_t>(part);
@@ -658,7 +655,7 @@ void add_setup_counts(const SetupInput<Real>& input, const SetupCounts& counts, 
     template void set_up_triangles<Real>(const SetupInput<Real>&, DrawList<Real>&, RenderStats&,                \
                                          ProgressMonitor&);                                                     \
     template void set_up_and_fill<Real>(const SetupInput<Real>&, const DirectFill<Real>&, const RowSplit&, int,  \
-                                        DirectScratch<Real>&, SetupCounts&, ProgressMonitor&);                   \
+                                        DirectScratch<Real>&, ProgressMonitor&);                                 \
     template void add_setup_counts<Real>(const SetupInput<Real>&, const SetupCounts&, RenderStats&);             \
     template void set_up_triangle<Real>(const SetupInput<Real>&, std::uint32_t, ChunkVector<FillTriangle<Real>>&, \
                                         ClipVertexStore<Real>&, SetupCounts&, LightVectorsAt<Real>&);

@@ -67,8 +67,8 @@ struct RowSplit {
 };
 
 /// set_up_and_fill()'s scratch for one walk of the mesh, written for every
-/// triangle: a cache line of its own, apart from the other walks' (two walks
-/// writing one line made two threads barely faster than one).
+/// triangle (the draws' end, the clipped corners' count, the counts): aligned
+/// to a cache line so that two walks on two threads never write one line.
 template <typename Real>
 struct alignas(64) DirectScratch {
     ChunkVector<FillTriangle<Real>> draws;  ///< the draws of the one triangle being filled
@@ -171,15 +171,15 @@ void split_rows_by_triangles(const std::vector<Triangle>& triangles, const Frame
 /// rows of part `part` of `split` (fill.target's rows): each triangle that
 /// may reach them set up as set_up_triangles() sets it up, its draws filled
 /// at once and forgotten, so no draw record reaches memory and nothing is
-/// sorted or binned (painter's order is the rank test of `fill`). Adds to
-/// `counts` the triangles this part owns (RowSplit::owner; the fill's counts
-/// are in `fill`'s target). Reports progress in pieces of kSetupChunk
-/// triangles, and stops early when the render is cancelled.
+/// sorted or binned (painter's order is the rank test of `fill`). Sets
+/// scratch.counts to the triangles this part owns (RowSplit::owner; the
+/// fill's counts are in `fill`'s target). Reports progress in pieces of
+/// kSetupChunk triangles, and stops early when the render is cancelled.
 template <typename Real>
 void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, const RowSplit& split, int part,
-                     DirectScratch<Real>& scratch, SetupCounts& counts, ProgressMonitor& progress);
+                     DirectScratch<Real>& scratch, ProgressMonitor& progress);
 
-/// Adds what set-up counted (set_up_and_fill()'s `counts`) to `stats`: the
+/// Adds what set-up counted (a chunk's, or a walk's scratch.counts) to `stats`: the
 /// triangles and the lighting done.
 template <typename Real>
 void add_setup_counts(const SetupInput<Real>& input, const SetupCounts& counts, RenderStats& stats);

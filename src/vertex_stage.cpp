@@ -24,7 +24,8 @@ constexpr std::size_t kLightingBlock = 1024;
 /// transforming them: a tight loop of independent loads keeps many cache
 /// misses in flight, where loads inside the transform's long loop body wait
 /// one by one (reading the caller's arrays there made a shuffled mesh's frame
-/// 1.7x its spatial order's, against 1.05x from a copy). 48 bytes each on the stack.
+/// 1.7-1.8x its spatial order's, against 1.0-1.2x from a copy; gathered
+/// here, 1.1-1.2x: docs/performance.md, "Mesh order"). 48 bytes each on the stack.
 constexpr std::size_t kGatherLanes = 256;
 
 /// The unit camera-space normals of vertices first .. first + n - 1, whose
