@@ -20,7 +20,7 @@
 
 #include <CLI/CLI.hpp>
 
-// Internal: detail::set_fill_in_mesh_order_allowed and set_mesh_order_walks, for --banded-ambient and --one-walk.
+// Internal: detail::set_mesh_order_walk_choice and set_mesh_order_walks, for --banded-ambient and --one-walk.
 #include "fill_driver.hpp"
 #include "phongrast/render.hpp"
 #include "mesh_orders.hpp"
@@ -116,9 +116,9 @@ std::vector<double> ambient_and_full_ms(phongrast::Scene& scene, const phongrast
         contenders.push_back([&] {
             scene.shader = Shader::phong;
             scene.lighting = Lighting::only_ambient();
-            const bool allowed = phongrast::detail::set_fill_in_mesh_order_allowed(false);
+            const auto allowed = phongrast::detail::set_mesh_order_walk_choice(phongrast::detail::WalkChoice::never);
             const double ms = support::time_ms([&] { renderers[cases.size()].render(scene); });
-            phongrast::detail::set_fill_in_mesh_order_allowed(allowed);
+            phongrast::detail::set_mesh_order_walk_choice(allowed);
             return ms;
         });
     }

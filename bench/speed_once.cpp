@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <functional>
 #include <optional>
@@ -18,6 +19,8 @@
 
 // Internal: detail::override_kernel_isa, to time the instruction sets in one process.
 #include "fill_dispatch.hpp"
+// Internal: detail::set_mesh_order_walk_choice, for --walk-against-sorted.
+#include "fill_driver.hpp"
 #include "phongrast/render.hpp"
 #include "support/speed_scenes.hpp"
 #include "support/timing.hpp"
@@ -66,11 +69,41 @@ void time_steps(const phongrast::Scene& scene, phongrast::RenderOptions options,
                 static_cast<unsigned long long>(shaded[variants.size() - 1]));
 }
 
+/// --walk-against-sorted: the fill in mesh order (walks, when the scene
+/// allows it) and the sorted fill (set-up records, painter's sort, bins)
+/// timed in one process in interleaved rounds; prints a Markdown row of
+/// medians, their ratio, and whether the two images are the same bits.
+void time_walk_against_sorted(const phongrast::Scene& scene, const phongrast::RenderOptions& options, int repeat,
+                              int warmup, const std::string& label) {
+    phongrast::Renderer walking(options), sorting(options);
+    phongrast::Image walked, sorted;
+    std::uint64_t walked_passes = 0;
+    const std::vector<std::function<double()>> contenders = {
+        [&] {
+            const std::uint64_t before = phongrast::detail::passes_filled_in_mesh_order();
+            const double ms = support::time_ms([&] { walked = walking.render(scene).image; });
+            walked_passes += phongrast::detail::passes_filled_in_mesh_order() - before;
+            return ms;
+        },
+        [&] {
+            const auto was = phongrast::detail::set_mesh_order_walk_choice(phongrast::detail::WalkChoice::never);
+            const double ms = support::time_ms([&] { sorted = sorting.render(scene).image; });
+            phongrast::detail::set_mesh_order_walk_choice(was);
+            return ms;
+        }};
+    const std::vector<double> median = support::interleaved_medians(repeat, warmup, contenders);
+    const bool same = walked.pixels.size() == sorted.pixels.size() &&
+                      std::memcmp(walked.pixels.data(), sorted.pixels.data(),
+                                  walked.pixels.size() * sizeof(glm::vec3)) == 0;
+    std::printf("| %s | %.3f | %.3f | %.3f | %s | %s |\n", label.c_str(), median[0], median[1], median[0] / median[1],
+                walked_passes > 0 ? "yes" : "no (sorted both)", same ? "yes" : "NO");
+}
+
 struct Settings {
     std::string name = "icosphere-9.7k", shader = "phong", mode = "exact", precision = "float";
     std::string overdraw = "auto", isa = "best", lighting, dump;
     int rows = 0, threads = 1, repeat = 5, warmup = 1;
-    bool steps = false;
+    bool steps = false, walk_against_sorted = false;
 };
 
 phongrast::RenderOptions options_for(const Settings& s) {
@@ -137,6 +170,9 @@ int main(int argc, char** argv) {
     app.add_flag("--steps", s.steps,
                  "time every layer + baseline kernels, automatic overdraw + baseline, automatic + AVX2 "
                  "in interleaved rounds in this process; print a Markdown row (medians in ms, ratios to the first)");
+    app.add_flag("--walk-against-sorted", s.walk_against_sorted,
+                 "time the fill in mesh order against the sorted fill in interleaved rounds in this process; print a "
+                 "Markdown row: medians in ms, walk / sorted, whether it walked, same image");
     app.add_option("--lighting", s.lighting, "the scene's lighting instead of its own, as the command names it (ambient, full, ...)");
     app.add_option("--dump", s.dump, "write the last image's raw float RGB pixels here (to compare two builds with cmp)");
     CLI11_PARSE(app, argc, argv);
@@ -149,7 +185,10 @@ int main(int argc, char** argv) {
             phongrast::detail::override_kernel_isa(s.isa == "avx2" ? phongrast::detail::KernelIsa::avx2
                                                                    : phongrast::detail::KernelIsa::baseline);
         }
-        if (s.steps) {
+        if (s.walk_against_sorted) {
+            time_walk_against_sorted(named.scene, options, s.repeat, s.warmup,
+                                     s.name + " | " + s.shader + " | " + s.mode + " | " + std::to_string(s.threads));
+        } else if (s.steps) {
             time_steps(named.scene, options, s.repeat, s.warmup,
                        s.name + " | " + s.shader + " | " + s.mode + " | " + std::to_string(s.threads));
         } else {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -160,9 +161,10 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     plan.order_free = one_color && !plan.depth_test && !plan.shade_visible_only && textures == nullptr;
     // Flat, Gouraud and Phong's unlit kernel go through fill_samples(), the
     // specialised ones only for Phong (the general kernel shades in batches).
+    // Flat and Gouraud light per triangle or corner, in set-up or the vertex stage: lit or not, they may walk.
     plan.may_fill_in_mesh_order = !plan.depth_test && !plan.shade_visible_only && textures == nullptr &&
-                                  !effects.diffuse && !effects.specular &&
-                                  (scene.shader != Shader::phong || options.specialize_effects);
+                                  (scene.shader != Shader::phong ||
+                                   (!effects.diffuse && !effects.specular && options.specialize_effects));
     plan.reads_corners = textures != nullptr ||
                          (scene.shader == Shader::phong && (effects.normals || effects.varying_colors));
     return plan;
@@ -229,20 +231,60 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
 }
 
 namespace {
-std::atomic<bool> mesh_order_fill_allowed{true};
+std::atomic<WalkChoice> walk_choice{WalkChoice::by_triangle_size};
 std::atomic<std::uint64_t> mesh_order_fill_passes{0};
 std::atomic<int> mesh_order_fill_walks{0};
 }  // namespace
 
-bool set_fill_in_mesh_order_allowed(bool allowed) { return mesh_order_fill_allowed.exchange(allowed); }
+WalkChoice set_mesh_order_walk_choice(WalkChoice choice) { return walk_choice.exchange(choice); }
 
 std::uint64_t passes_filled_in_mesh_order() { return mesh_order_fill_passes.load(std::memory_order_relaxed); }
 
 int set_mesh_order_walks(int walks) { return mesh_order_fill_walks.exchange(walks); }
 
+double sampled_samples_per_triangle(const std::vector<Triangle>& triangles, const FrameVector<ScreenVertex>& screen,
+                                    int rows, int columns) {
+    constexpr std::size_t kSample = 4096;
+    const std::size_t step = std::max<std::size_t>(1, triangles.size() / kSample);
+    const double image_area = double(rows) * double(columns);
+    double area_sum = 0.0;
+    std::size_t counted = 0;
+    for (std::size_t t = 0; t < triangles.size(); t += step) {
+        const ScreenVertex& a = screen[triangles[t][0]];
+        const ScreenVertex& b = screen[triangles[t][1]];
+        const ScreenVertex& c = screen[triangles[t][2]];
+        // A corner not in front of the eye has NaN rows: left out, as a triangle off the image.
+        if (!(std::isfinite(a.row) && std::isfinite(b.row) && std::isfinite(c.row) && std::isfinite(a.column) &&
+              std::isfinite(b.column) && std::isfinite(c.column))) {
+            continue;
+        }
+        const double top = std::min({a.row, b.row, c.row}), bottom = std::max({a.row, b.row, c.row});
+        const double left = std::min({a.column, b.column, c.column}), right = std::max({a.column, b.column, c.column});
+        if (!(bottom >= 0.0 && top <= rows && right >= 0.0 && left <= columns)) continue;
+        const double area = 0.5 * std::abs((b.column - a.column) * (c.row - a.row) -
+                                           (c.column - a.column) * (b.row - a.row));
+        area_sum += std::isfinite(area) ? std::min(area, image_area) : image_area;
+        ++counted;
+    }
+    return counted == 0 ? 0.0 : area_sum / double(counted);
+}
+
 template <typename Real>
-bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs) {
-    return plan.may_fill_in_mesh_order && !extra_outputs && mesh_order_fill_allowed.load(std::memory_order_relaxed);
+bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs, double samples_per_triangle) {
+    if (!plan.may_fill_in_mesh_order || extra_outputs) return false;
+    switch (walk_choice.load(std::memory_order_relaxed)) {
+    case WalkChoice::always: return true;
+    case WalkChoice::never: return false;
+    case WalkChoice::by_triangle_size: break;
+    }
+    if (samples_per_triangle > kWalkMaxSamplesPerTriangle) return false;
+    // Each walk reads every triangle's corners to find those that reach its
+    // rows, a cost more threads do not share, where the sorted fill's whole
+    // set-up is shared; lit flat and Gouraud walks gained at one walk only
+    // (docs/performance.md), ambient ones at two as well.
+    const int forced_walks = mesh_order_fill_walks.load(std::memory_order_relaxed);
+    const int walks = forced_walks > 0 ? forced_walks : tbb::this_task_arena::max_concurrency();
+    return walks == 1 || !(plan.effects.diffuse || plan.effects.specular);
 }
 
 template <typename Real>
@@ -323,7 +365,7 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
                                             const std::vector<glm::vec3>*);                                  \
     template void fill_bins<Real>(const Scene&, const RenderOptions&, const FillPlan<Real>&, const Bins<Real>&,  \
                                   int, int, FillMemory<Real>&, Image&, RenderStats&, ProgressMonitor&);    \
-    template bool fills_in_mesh_order<Real>(const FillPlan<Real>&, bool);                                     \
+    template bool fills_in_mesh_order<Real>(const FillPlan<Real>&, bool, double);                                     \
     template void fill_in_mesh_order<Real>(const Scene&, const RenderOptions&, const FillPlan<Real>&,        \
                                            const SetupInput<Real>&, const std::uint32_t*, int, int,           \
                                            DrawList<Real>&, FillMemory<Real>&, Image&, RenderStats&,          \

@@ -53,9 +53,10 @@ struct FillPlan {
     bool reads_corners = false;
     EffectSet effects;               ///< what the kernel evaluates (for the term counts)
     /// The kernel goes through fill_samples() (FillTarget::rank_keys), every
-    /// layer shaded, no depth buffer, no texture, and no term that lights per
-    /// sample or needs a normal (ambient only): fill_in_mesh_order() may
-    /// paint this picture, when nothing else asks for painter's order.
+    /// layer shaded, no depth buffer, no texture, and nothing lit per sample
+    /// (flat and Gouraud, whose light is per triangle or corner; Phong
+    /// ambient only): fill_in_mesh_order() may paint this picture, when
+    /// nothing else asks for painter's order.
     bool may_fill_in_mesh_order = false;
 };
 
@@ -77,14 +78,35 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
                int rows, int columns, FillMemory<Real>& memory, Image& image, RenderStats& stats,
                ProgressMonitor& progress);
 
-/// Whether this pass fills in mesh order: the plan allows it and no extra
-/// output names the last triangle.
-template <typename Real>
-bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs);
+/// The walk's extra cost is per sample (a rank read and compared for each
+/// sample shaded), its saving per triangle (no record, sort or bins): it
+/// pays on meshes of small triangles only. `bench_speed_once
+/// --walk-against-sorted` (docs/performance.md, "The fill in mesh order"):
+/// walk / sorted 0.77-0.91 at 2.3-3.9 samples per drawn triangle and below,
+/// 1.10-1.40 at 20-226.
+constexpr double kWalkMaxSamplesPerTriangle = 8.0;
 
-/// For tests: whether fills_in_mesh_order() may say yes (it may by default),
-/// so that a scene can be rendered both ways. Returns the previous setting.
-bool set_fill_in_mesh_order_allowed(bool allowed);
+/// The mean area in samples of a sample of up to 4,096 of the mesh's
+/// triangles (every size()/4096-th) that lie at least partly on the image,
+/// each counted at most as the image's area; 0 when none does.
+double sampled_samples_per_triangle(const std::vector<Triangle>& triangles, const FrameVector<ScreenVertex>& screen,
+                                    int rows, int columns);
+
+/// Whether this pass fills in mesh order: the plan allows it, no extra
+/// output names the last triangle, its triangles are small (mean area
+/// `samples_per_triangle`, at most kWalkMaxSamplesPerTriangle), and it is
+/// ambient only or fills in one walk (one thread).
+template <typename Real>
+bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs, double samples_per_triangle);
+
+/// For tests and benchmarks: when fills_in_mesh_order() says yes.
+enum class WalkChoice {
+    by_triangle_size,  ///< the default: the plan allows it and the triangles are small
+    always,            ///< whenever the plan allows it, whatever the triangles' size
+    never,             ///< never: every pass is set up, sorted and binned
+};
+/// Sets the choice; returns the previous one.
+WalkChoice set_mesh_order_walk_choice(WalkChoice choice);
 /// For tests: the passes filled in mesh order since the process started.
 std::uint64_t passes_filled_in_mesh_order();
 /// For tests: the walks fill_in_mesh_order() splits the rows into (at most:
@@ -92,7 +114,7 @@ std::uint64_t passes_filled_in_mesh_order();
 /// thread. Returns the previous setting.
 int set_mesh_order_walks(int walks);
 
-/// Ambient only (fills_in_mesh_order()): set-up and fill in walks of the
+/// When fills_in_mesh_order() says so: set-up and fill in walks of the
 /// mesh, one per thread, each over its own rows of the image
 /// (set_up_and_fill(), RowSplit), painter's order kept by a rank test per
 /// sample instead of a sort, into `image` resized and cleared as fill_bins()

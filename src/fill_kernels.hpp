@@ -199,9 +199,9 @@ static_assert(kSampleBatch % kLaneGroup == 0, "a batch is whole lane groups");
 /// counted. All lanes finite (the case that should always hold) is checked
 /// in a vector loop first. Out of line, so that the sample-by-sample loop of
 /// the short spans keeps its registers.
-template <typename Real, bool Perspective, typename ShadeLanes>
-PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count, glm::vec3* pixels,
-                                           std::uint64_t& replaced, ShadeLanes& shade_lanes) {
+template <typename Real, bool Perspective, typename ShadeLanes, typename Store>
+PHONGRAST_FILL_INLINE void shade_span_lanes(const Real* q, const Real* dq, int count, ShadeLanes& shade_lanes,
+                                            Store&& store) {
     Lanes<Real> w[3], out[3];
     for (int start = 0; start < count; start += kSampleBatch) {
         const int n = std::min(kSampleBatch, count - start);
@@ -231,8 +231,19 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
             const float sum = channel[0][l] + channel[1][l] + channel[2][l];
             nonfinite |= int(l < n) & int(!(std::abs(sum) <= std::numeric_limits<float>::max()));
         }
+        store(start, n, static_cast<const float(*)[kSampleBatch]>(channel), nonfinite != 0);
+    }
+}
+
+/// Shades a span in batches (shade_span_lanes()) and writes every sample.
+template <typename Real, bool Perspective, typename ShadeLanes>
+PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count, glm::vec3* pixels,
+                                        std::uint64_t& replaced, ShadeLanes& shade_lanes) {
+    shade_span_lanes<Real, Perspective>(
+        q, dq, count, shade_lanes,
+        [&](int start, int n, const float (*channel)[kSampleBatch], bool nonfinite) PHONGRAST_INLINE_LAMBDA {
         glm::vec3* batch_pixels = pixels + start;
-        if (nonfinite == 0) {
+        if (!nonfinite) {
             for (int l = 0; l < n; ++l) batch_pixels[l] = glm::vec3(channel[0][l], channel[1][l], channel[2][l]);
         } else {
             for (int l = 0; l < n; ++l) {
@@ -240,7 +251,7 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
                     finite_or_replaced(glm::vec3(channel[0][l], channel[1][l], channel[2][l]), replaced);
             }
         }
-    }
+    });
 }
 
 /// fill_ranked_span()'s loop. `Ties`: the draws' ties must be compared (a
@@ -270,6 +281,39 @@ PHONGRAST_FILL_INLINE void fill_ranked_samples(const FillTriangle<Real>& draw, F
             pixels[k] = colour;
         }
     }
+}
+
+/// fill_ranked_span()'s long spans: shaded in batches as fill_span_lanes()
+/// shades them (the same bits as sample by sample), each sample then written
+/// by the rank test of fill_ranked_samples().
+template <bool Ties, typename Real, bool Perspective, typename ShadeLanes>
+PHONGRAST_NOINLINE void fill_ranked_span_lanes(FillTarget<Real>& target, std::size_t start, int count,
+                                               const Real* q, const Real* dq, ShadeLanes& shade_lanes) {
+    std::uint64_t* keys = target.rank_keys + start;
+    std::uint32_t* ties = Ties ? target.rank_ties + start : nullptr;
+    glm::vec3* pixels = target.image.pixels.data() + start;
+    const std::uint64_t key = target.key;
+    const std::uint32_t tie = target.tie;
+    shade_span_lanes<Real, Perspective>(
+        q, dq, count, shade_lanes,
+        [&](int batch, int n, const float (*channel)[kSampleBatch], bool nonfinite) PHONGRAST_INLINE_LAMBDA {
+        for (int l = 0; l < n; ++l) {
+            glm::vec3 colour(channel[0][l], channel[1][l], channel[2][l]);
+            if (nonfinite) colour = finite_or_replaced(colour, target.replaced);
+            const int k = batch + l;
+            if constexpr (Ties) {
+                if (key > keys[k] || (key == keys[k] && tie > ties[k])) {
+                    keys[k] = key;
+                    ties[k] = tie;
+                    pixels[k] = colour;
+                }
+            } else if (key >= keys[k]) {
+                keys[k] = key;
+                pixels[k] = colour;
+            }
+        }
+    });
+    target.samples += static_cast<std::uint64_t>(count);
 }
 
 /// One span of fill_samples() when painter's order is a test per sample
@@ -309,6 +353,17 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
         const std::uint32_t* owners = owner_row(target, row);
         target.covered += static_cast<std::uint64_t>(count);
         if (target.rank_keys != nullptr) {
+            if constexpr (!std::is_same_v<std::decay_t<ShadeLanes>, NoLanes>) {
+                if (count >= kMinLanesSpan) {
+                    const std::size_t start = row_start + static_cast<std::size_t>(first_column);
+                    if (target.rank_ties != nullptr) {
+                        fill_ranked_span_lanes<true, Real, Perspective>(target, start, count, q, dq, shade_lanes);
+                    } else {
+                        fill_ranked_span_lanes<false, Real, Perspective>(target, start, count, q, dq, shade_lanes);
+                    }
+                    return;
+                }
+            }
             fill_ranked_span<Real, Perspective>(draw, target, row_start, first_column, count, q, dq, shade);
             return;
         }

@@ -168,8 +168,12 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                  parts.colour_part_shaders,
                                  parts.specular_part_shaders,
                                  exact_gouraud && in_parts ? memory.vertex_colour_parts.data() : nullptr};
-    if (fills_in_mesh_order(fill_plan, out.aov_planes.any())) {
-        // Ambient only: no record, sort or bins; a walk of the mesh per thread (fill_driver.hpp).
+    const double samples_per_triangle =
+        fill_plan.may_fill_in_mesh_order
+            ? sampled_samples_per_triangle(scene.mesh.triangles, memory.vertices.screen, rows, columns)
+            : 0.0;
+    if (fills_in_mesh_order(fill_plan, out.aov_planes.any(), samples_per_triangle)) {
+        // Small triangles, nothing lit per sample: no record, sort or bins; a walk of the mesh per thread (fill_driver.hpp).
         fill_in_mesh_order(scene, options, fill_plan, setup, out.original_triangle, rows, columns, memory.draws,
                            memory.fill, out.image, stats, progress);
         return;

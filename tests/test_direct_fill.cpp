@@ -10,6 +10,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -40,9 +41,10 @@ private:
     T previous_;
 };
 
-/// Allows or forbids the fill in mesh order.
-struct MeshOrderFill : ScopedSwitch<bool> {
-    explicit MeshOrderFill(bool allowed) : ScopedSwitch<bool>(detail::set_fill_in_mesh_order_allowed, allowed) {}
+/// When the fill in mesh order is taken (by triangle size, always, never).
+struct MeshOrderFill : ScopedSwitch<detail::WalkChoice> {
+    explicit MeshOrderFill(detail::WalkChoice choice)
+        : ScopedSwitch<detail::WalkChoice>(detail::set_mesh_order_walk_choice, choice) {}
 };
 
 /// Splits the fill in mesh order into `walks` walks (0: one per thread).
@@ -110,6 +112,7 @@ void check_painters_picture(const Scene& scene, RenderOptions options) {
                                      ? std::uint64_t(options.samples_per_axis) * std::uint64_t(options.samples_per_axis)
                                      : 1;
     options.threads = 1;
+    MeshOrderFill walk_any_size(detail::WalkChoice::always);  // the tied squares' triangles are large
     std::uint64_t before = detail::passes_filled_in_mesh_order();
     const RenderResult direct = render(scene, options);
     CHECK(detail::passes_filled_in_mesh_order() == before + passes);
@@ -129,7 +132,7 @@ void check_painters_picture(const Scene& scene, RenderOptions options) {
     before = detail::passes_filled_in_mesh_order();
     std::vector<RenderResult> sorted;
     {
-        MeshOrderFill forbidden(false);
+        MeshOrderFill forbidden(detail::WalkChoice::never);
         for (int threads : {1, 2}) {
             options.threads = threads;
             sorted.push_back(render(scene, options));
@@ -148,7 +151,7 @@ void check_painters_picture(const Scene& scene, RenderOptions options) {
 
 }  // namespace
 
-TEST_CASE("ambient-only fills in mesh order and paints painter's picture") {
+TEST_CASE("the fill in mesh order paints painter's picture: ambient only, and flat and Gouraud lit") {
     struct Case {
         const char* name;
         Scene scene;
@@ -174,12 +177,18 @@ TEST_CASE("ambient-only fills in mesh order and paints painter's picture") {
     CHECK(render(inside_sphere_scene(), RenderOptions::exact()).stats.triangles_clipped > 0);
     for (const Case& c : cases) {
         for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
-            for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
-                if (!mode.options.specialize_effects && shader == Shader::phong) continue;  // batches: not this path
-                Scene scene = c.scene;
-                scene.shader = shader;
-                INFO(c.name << ", " << to_string(shader) << ", " << mode.name);
-                check_painters_picture(scene, mode.options);
+            // Flat and Gouraud light per triangle or corner, never per sample: lit, they walk too.
+            for (bool lit : {false, true}) {
+                if (lit && shader == Shader::phong) continue;  // lights per sample: sorted (test below)
+                for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+                    if (!mode.options.specialize_effects && shader == Shader::phong) continue;  // batches
+                    Scene scene = c.scene;
+                    scene.shader = shader;
+                    if (lit) scene.lighting = Lighting::full();
+                    INFO(c.name << ", " << to_string(shader) << (lit ? ", full lighting, " : ", ambient, ")
+                                << mode.name);
+                    check_painters_picture(scene, mode.options);
+                }
             }
         }
     }
@@ -243,9 +252,17 @@ TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's
         scene.mesh.triangles.push_back(copy);
     }
     std::shuffle(scene.mesh.triangles.begin(), scene.mesh.triangles.end(), random);
-    for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+    MeshOrderFill walk_any_size(detail::WalkChoice::always);
+    // The larger image's spans are long: shaded in batches, then ranked (fill_ranked_span_lanes()).
+    for (const auto& [shader, side, lighting] :
+         {std::tuple{Shader::flat, 0, Lighting::only_ambient()}, std::tuple{Shader::gouraud, 0, Lighting::only_ambient()},
+          std::tuple{Shader::phong, 0, Lighting::only_ambient()}, std::tuple{Shader::gouraud, 0, Lighting::full()},
+          std::tuple{Shader::gouraud, 320, Lighting::only_ambient()}, std::tuple{Shader::phong, 320, Lighting::only_ambient()},
+          std::tuple{Shader::gouraud, 320, Lighting::full()}}) {
         scene.shader = shader;
-        INFO(to_string(shader));
+        scene.lighting = lighting;
+        if (side > 0) scene.image.rows = scene.image.columns = side;
+        INFO(to_string(shader) << ", image " << scene.image.columns << " x " << scene.image.rows);
         RenderOptions options = RenderOptions::exact();
         options.threads = 1;
         Renderer direct_renderer(options);
@@ -254,7 +271,7 @@ TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's
         CHECK(detail::passes_filled_in_mesh_order() == before + 1);
         RenderResult sorted;
         {
-            MeshOrderFill forbidden(false);
+            MeshOrderFill forbidden(detail::WalkChoice::never);
             Renderer sorted_renderer(options);
             sorted = sorted_renderer.render(scene);
         }
@@ -279,14 +296,16 @@ TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's
     detail::set_reorder_always(previous_always);
 }
 
-TEST_CASE("full lighting, extra outputs and the depth buffer do not fill in mesh order") {
+TEST_CASE("Phong lit per sample, extra outputs and the depth buffer do not fill in mesh order") {
     Scene scene = coloured_sphere_scene();
-    scene.shader = Shader::gouraud;
     RenderOptions options = RenderOptions::exact();
     options.threads = 1;
+    MeshOrderFill walk_any_size(detail::WalkChoice::always);
     const std::uint64_t before = detail::passes_filled_in_mesh_order();
+    scene.shader = Shader::phong;
     scene.lighting = Lighting::full();
     render(scene, options);
+    scene.shader = Shader::gouraud;
     scene.lighting = Lighting::only_ambient();
     RenderOptions with_id = options;
     with_id.aovs.id = true;
@@ -295,6 +314,68 @@ TEST_CASE("full lighting, extra outputs and the depth buffer do not fill in mesh
     depth_buffer.visibility = Visibility::depth_buffer;
     render(scene, depth_buffer);
     CHECK(detail::passes_filled_in_mesh_order() == before);
+}
+
+TEST_CASE("the fill in mesh order is taken for small triangles, and lit ones on one thread") {
+    RenderOptions options = RenderOptions::exact();
+    for (Shader shader : {Shader::flat, Shader::gouraud}) {
+        for (Lighting lighting : {Lighting::only_ambient(), Lighting::full()}) {
+            const bool lit = lighting.diffuse;
+            INFO(to_string(shader) << (lit ? ", full lighting" : ", ambient"));
+            options.threads = 1;
+            // The sphere's triangles cover a few samples each: walked.
+            Scene small = coloured_sphere_scene();
+            small.shader = shader;
+            small.lighting = lighting;
+            std::uint64_t before = detail::passes_filled_in_mesh_order();
+            render(small, options);
+            CHECK(detail::passes_filled_in_mesh_order() == before + 1);
+            // The same sphere at 8 x 8 times the pixels: its triangles cover 64 times the samples, sorted.
+            Scene large = small;
+            large.image.rows *= 8;
+            large.image.columns *= 8;
+            before = detail::passes_filled_in_mesh_order();
+            render(large, options);
+            CHECK(detail::passes_filled_in_mesh_order() == before);
+            // Two walks: ambient only.
+            options.threads = 2;
+            MeshOrderWalks two(2);
+            before = detail::passes_filled_in_mesh_order();
+            render(small, options);
+            CHECK(detail::passes_filled_in_mesh_order() == before + (lit ? 0 : 1));
+        }
+    }
+}
+
+TEST_CASE("the triangles' sampled mean area counts those on the image, each at most the image") {
+    detail::FrameVector<detail::ScreenVertex> screen;
+    std::vector<Triangle> triangles;
+    const auto add = [&](glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+        const auto first = static_cast<std::uint32_t>(screen.size());
+        for (glm::dvec2 p : {a, b, c}) screen.push_back({p.x, p.y, 1.0});
+        triangles.push_back({first, first + 1, first + 2});
+    };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    // 100 x 50 image (columns x rows): right triangles of area 2 and 8 on it, clockwise or not.
+    add({10, 10}, {12, 10}, {10, 12});
+    add({20, 20}, {20, 24}, {24, 20});
+    CHECK(detail::sampled_samples_per_triangle(triangles, screen, 50, 100) == Approx(5.0));
+    // Off the image, behind the eye (NaN): left out.
+    add({200, 10}, {210, 10}, {200, 20});
+    add({10, -30}, {20, -30}, {10, -20});
+    add({10, 10}, {20, nan}, {10, 20});
+    add({nan, 10}, {20, 10}, {10, 20});
+    CHECK(detail::sampled_samples_per_triangle(triangles, screen, 50, 100) == Approx(5.0));
+    // Huge, or too large to measure: counted as the image's 5,000 samples.
+    add({-1e300, -1e300}, {1e300, -1e300}, {0, 1e300});
+    CHECK(detail::sampled_samples_per_triangle(triangles, screen, 50, 100) == Approx((2.0 + 8.0 + 5000.0) / 3.0));
+    // A degenerate triangle on the image: area 0, counted.
+    add({30, 30}, {31, 31}, {32, 32});
+    CHECK(detail::sampled_samples_per_triangle(triangles, screen, 50, 100) == Approx((2.0 + 8.0 + 5000.0) / 4.0));
+    // None on the image: 0.
+    const std::vector<Triangle> off(triangles.begin() + 2, triangles.begin() + 5);
+    CHECK(detail::sampled_samples_per_triangle(off, screen, 50, 100) == 0.0);
+    CHECK(detail::sampled_samples_per_triangle({}, screen, 50, 100) == 0.0);
 }
 
 TEST_CASE("the rows are split into parts of at least one row each, in order, whatever the triangles") {
