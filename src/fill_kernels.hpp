@@ -254,9 +254,27 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
     });
 }
 
-/// fill_ranked_span()'s loop. `Ties`: the draws' ties must be compared (a
+/// The rank test of the fill in mesh order: writes `colour` to sample k
+/// where painter's order draws this draw (rank `key`, then `tie`) after the
+/// one whose colour is there. `Ties`: the draws' ties must be compared (a
 /// reordered mesh); else the draws come in the order of their ties, so a
 /// draw of equal key always comes after the one whose colour is there.
+template <bool Ties>
+PHONGRAST_FILL_INLINE void write_if_ranked_later(std::uint64_t* keys, std::uint32_t* ties, glm::vec3* pixels, int k,
+                                                 std::uint64_t key, std::uint32_t tie, glm::vec3 colour) {
+    if constexpr (Ties) {
+        if (key > keys[k] || (key == keys[k] && tie > ties[k])) {
+            keys[k] = key;
+            ties[k] = tie;
+            pixels[k] = colour;
+        }
+    } else if (key >= keys[k]) {
+        keys[k] = key;
+        pixels[k] = colour;
+    }
+}
+
+/// fill_ranked_span()'s loop (`Ties`: write_if_ranked_later()).
 template <bool Ties, typename Real, bool Perspective, typename Shade>
 PHONGRAST_FILL_INLINE void fill_ranked_samples(const FillTriangle<Real>& draw, FillTarget<Real>& target,
                                                std::size_t start, int count, const Real* q, const Real* dq,
@@ -270,16 +288,7 @@ PHONGRAST_FILL_INLINE void fill_ranked_samples(const FillTriangle<Real>& draw, F
         Real w[3];
         sample_weights<Real, Perspective>(draw, q, dq, k, w);
         const glm::vec3 colour = finite_or_replaced(glm::vec3(shade(w)), target.replaced);
-        if constexpr (Ties) {
-            if (key > keys[k] || (key == keys[k] && tie > ties[k])) {
-                keys[k] = key;
-                ties[k] = tie;
-                pixels[k] = colour;
-            }
-        } else if (key >= keys[k]) {
-            keys[k] = key;
-            pixels[k] = colour;
-        }
+        write_if_ranked_later<Ties>(keys, ties, pixels, k, key, tie, colour);
     }
 }
 
@@ -300,17 +309,7 @@ PHONGRAST_NOINLINE void fill_ranked_span_lanes(FillTarget<Real>& target, std::si
         for (int l = 0; l < n; ++l) {
             glm::vec3 colour(channel[0][l], channel[1][l], channel[2][l]);
             if (nonfinite) colour = finite_or_replaced(colour, target.replaced);
-            const int k = batch + l;
-            if constexpr (Ties) {
-                if (key > keys[k] || (key == keys[k] && tie > ties[k])) {
-                    keys[k] = key;
-                    ties[k] = tie;
-                    pixels[k] = colour;
-                }
-            } else if (key >= keys[k]) {
-                keys[k] = key;
-                pixels[k] = colour;
-            }
+            write_if_ranked_later<Ties>(keys, ties, pixels, batch + l, key, tie, colour);
         }
     });
     target.samples += static_cast<std::uint64_t>(count);
