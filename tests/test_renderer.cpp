@@ -106,13 +106,19 @@ std::vector<Frame> varied_frames() {
     depth.visibility = Visibility::depth_buffer;
     depth.threads = 2;
     frames.push_back({sphere(24, 70, 70, Shader::phong, false), depth, "depth buffer, 2 threads"});
-    // Ambient only: filled in walks of the mesh (fill_driver.hpp), one per thread.
+    // Ambient only, small triangles: filled in walks of the mesh (fill_driver.hpp), one per thread.
     for (int threads : {2, 1}) {
         Scene ambient = sphere(22, 66, 74, Shader::gouraud, threads == 2);
         ambient.lighting = Lighting::only_ambient();
         RenderOptions walked = exact;
         walked.threads = threads;
         frames.push_back({ambient, walked, "ambient only, filled in mesh order, " + std::to_string(threads) + " thread(s)"});
+    }
+    // Lit Gouraud and flat, small triangles, one thread: one walk of the mesh.
+    for (Shader shader : {Shader::gouraud, Shader::flat}) {
+        RenderOptions one_walk = exact;
+        one_walk.threads = 1;
+        frames.push_back({sphere(22, 66, 74, shader, false), one_walk, "lit, filled in mesh order, 1 thread"});
     }
     frames.push_back({sphere(16, 64, 80, Shader::phong, false), exact, "the first frame again"});
     return frames;
