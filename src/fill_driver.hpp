@@ -82,8 +82,8 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
 /// sample shaded), its saving per triangle (no record, sort or bins): it
 /// pays on meshes of small triangles only. `bench_speed_once
 /// --walk-against-sorted` (docs/performance.md, "The fill in mesh order"):
-/// walk / sorted 0.77-0.91 at 2.3-3.9 samples per drawn triangle and below,
-/// 1.10-1.40 at 20-226.
+/// walk / sorted at one thread 0.82-0.99 (seed Gouraud 0.92-1.08) at
+/// 1.3-3.9 samples per drawn triangle, 0.99-1.40 at 20-226.
 constexpr double kWalkMaxSamplesPerTriangle = 8.0;
 
 /// The mean area in samples of a sample of up to 4,096 of the mesh's

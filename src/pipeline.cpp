@@ -173,7 +173,8 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
             ? sampled_samples_per_triangle(scene.mesh.triangles, memory.vertices.screen, rows, columns)
             : 0.0;
     if (fills_in_mesh_order(fill_plan, out.aov_planes.any(), samples_per_triangle)) {
-        // Small triangles, nothing lit per sample: no record, sort or bins; a walk of the mesh per thread (fill_driver.hpp).
+        // Small triangles, nothing lit per sample: no record, sort or bins; a walk of the mesh per
+        // thread (fill_driver.hpp).
         fill_in_mesh_order(scene, options, fill_plan, setup, out.original_triangle, rows, columns, memory.draws,
                            memory.fill, out.image, stats, progress);
         return;

@@ -254,11 +254,12 @@ TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's
     std::shuffle(scene.mesh.triangles.begin(), scene.mesh.triangles.end(), random);
     MeshOrderFill walk_any_size(detail::WalkChoice::always);
     // The larger image's spans are long: shaded in batches, then ranked (fill_ranked_span_lanes()).
+    const Lighting ambient = Lighting::only_ambient(), full = Lighting::full();
     for (const auto& [shader, side, lighting] :
-         {std::tuple{Shader::flat, 0, Lighting::only_ambient()}, std::tuple{Shader::gouraud, 0, Lighting::only_ambient()},
-          std::tuple{Shader::phong, 0, Lighting::only_ambient()}, std::tuple{Shader::gouraud, 0, Lighting::full()},
-          std::tuple{Shader::gouraud, 320, Lighting::only_ambient()}, std::tuple{Shader::phong, 320, Lighting::only_ambient()},
-          std::tuple{Shader::gouraud, 320, Lighting::full()}}) {
+         {std::tuple{Shader::flat, 0, ambient}, std::tuple{Shader::gouraud, 0, ambient},
+          std::tuple{Shader::phong, 0, ambient}, std::tuple{Shader::gouraud, 0, full},
+          std::tuple{Shader::gouraud, 320, ambient}, std::tuple{Shader::phong, 320, ambient},
+          std::tuple{Shader::gouraud, 320, full}}) {
         scene.shader = shader;
         scene.lighting = lighting;
         if (side > 0) scene.image.rows = scene.image.columns = side;
