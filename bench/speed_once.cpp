@@ -19,7 +19,7 @@
 
 // Internal: detail::override_kernel_isa, to time the instruction sets in one process.
 #include "fill_dispatch.hpp"
-// Internal: detail::set_mesh_order_walk_choice, for --walk-against-sorted.
+// Internal: detail::set_mesh_order_walk_choice, for --walk and --walk-against-sorted.
 #include "fill_driver.hpp"
 #include "phongrast/render.hpp"
 #include "support/speed_scenes.hpp"
@@ -101,7 +101,7 @@ void time_walk_against_sorted(const phongrast::Scene& scene, const phongrast::Re
 
 struct Settings {
     std::string name = "icosphere-9.7k", shader = "phong", mode = "exact", precision = "float";
-    std::string overdraw = "auto", isa = "best", lighting, dump;
+    std::string overdraw = "auto", isa = "best", lighting, dump, walk = "auto";
     int rows = 0, threads = 1, repeat = 5, warmup = 1;
     bool steps = false, walk_against_sorted = false;
 };
@@ -170,6 +170,10 @@ int main(int argc, char** argv) {
     app.add_flag("--steps", s.steps,
                  "time every layer + baseline kernels, automatic overdraw + baseline, automatic + AVX2 "
                  "in interleaved rounds in this process; print a Markdown row (medians in ms, ratios to the first)");
+    app.add_option("--walk", s.walk,
+                   "the fill in mesh order: auto (the render's choice), always (whenever nothing is lit per sample) "
+                   "or never")
+        ->check(CLI::IsMember({"auto", "always", "never"}));
     app.add_flag("--walk-against-sorted", s.walk_against_sorted,
                  "time the fill in mesh order against the sorted fill in interleaved rounds in this process; print a "
                  "Markdown row: medians in ms, walk / sorted, whether it walked, same image");
@@ -181,6 +185,10 @@ int main(int argc, char** argv) {
         named.scene.shader = phongrast::parse_shader(s.shader);
         if (!s.lighting.empty()) named.scene.lighting = phongrast::parse_lighting(s.lighting);
         const phongrast::RenderOptions options = options_for(s);
+        if (s.walk != "auto") {
+            phongrast::detail::set_mesh_order_walk_choice(s.walk == "always" ? phongrast::detail::WalkChoice::always
+                                                                             : phongrast::detail::WalkChoice::never);
+        }
         if (s.isa != "best") {
             phongrast::detail::override_kernel_isa(s.isa == "avx2" ? phongrast::detail::KernelIsa::avx2
                                                                    : phongrast::detail::KernelIsa::baseline);
