@@ -17,6 +17,8 @@
 
 #include <CLI/CLI.hpp>
 
+// Internal: detail::set_mesh_order_walk_choice, for --walk.
+#include "fill_driver.hpp"
 #include "mesh_order.hpp"
 #include "mesh_orders.hpp"
 #include "phongrast/render.hpp"
@@ -44,6 +46,8 @@ struct Settings {
     std::string dump;
     /// Each render timed by the process's CPU time, not the wall clock.
     bool cpu_time = false;
+    /// The fill in mesh order's choice: auto, always or never (fill_driver.hpp).
+    std::string walk = "auto";
 };
 
 /// The process's CPU time in milliseconds (every thread's).
@@ -218,8 +222,14 @@ int main(int argc, char** argv) {
     app.add_flag("--cpu-time", s.cpu_time,
                  "time each render by the process's CPU time (less disturbed by other work on a loaded machine)");
     app.add_flag("--sweep", s.sweep, "icospheres of 5k-330k triangles: where reordering starts to pay");
+    app.add_option("--walk", s.walk, "the fill in mesh order: auto (the render's choice), always or never")
+        ->check(CLI::IsMember({"auto", "always", "never"}));
     CLI11_PARSE(app, argc, argv);
     g_cpu_time = s.cpu_time;
+    if (s.walk != "auto") {
+        phongrast::detail::set_mesh_order_walk_choice(s.walk == "always" ? phongrast::detail::WalkChoice::always
+                                                                         : phongrast::detail::WalkChoice::never);
+    }
     try {
         if (s.sweep) {
             run_sweep(s);
