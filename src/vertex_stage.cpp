@@ -3,6 +3,7 @@
 #include "fill_types.hpp"
 #include "normalize_lanes.hpp"
 #include "resize_polling.hpp"
+#include "shade_lanes.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -194,49 +195,54 @@ void build_light_rig(const Scene& scene, const PhongMaterial& material, const Ca
 
 namespace {
 
-/// Vertices whose light vectors are normalised together.
+/// Vertices lit together.
 constexpr std::size_t kLightingLanes = 64;
-/// Active lights up to which the vectors are normalised lane by lane (their
-/// scratch lives on the stack); more go vertex by vertex.
-constexpr std::size_t kMaxLaneLights = 8;
 
-/// Specialised lighting of vertices [begin, end): the vectors to every
-/// active light and to the eye, for kLightingLanes vertices at a time, are
-/// normalised by safe_normalize_lanes() (vectorised), then each vertex is
-/// shaded from them: what PointShader computes vertex by vertex, bit for bit.
+/// Specialised lighting of vertices [begin, end), kLightingLanes at a time:
+/// the vectors to every active light and to the eye are normalised by
+/// safe_normalize_lanes(), then the vertices are shaded by shade_with_lanes()
+/// (one material) or vertex by vertex (materials per vertex): what
+/// PointShader computes vertex by vertex, bit for bit. A last, partial group
+/// fills its other lanes with copies of its first vertex.
 template <typename Real>
 void light_vertex_lanes(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
                         FrameVector<Varyings<Real>>& varyings, std::size_t begin, std::size_t end,
                         LightVectorsAt<Real>& vectors) {
     const std::vector<CameraLight<Real>>& lights = shader.rig->active_lights;
     const std::size_t count = lights.size() + 1;  // the lights, then the eye
-    Real lanes[(kMaxLaneLights + 1) * 3 * kLightingLanes];
+    AxisLanes<Real, kLightingLanes> lanes[kMaxLaneLights + 1];
+    AxisLanes<Real, kLightingLanes>& to_eye = lanes[lights.size()];
+    ShadeLanesInput<Real, kLightingLanes> in;
+    in.to_light = lanes;
+    in.to_eye = &to_eye;
+    AxisLanes<Real, kLightingLanes> lit;
     vectors.to_light.resize(lights.size());
-    const auto lane = [&](std::size_t vector, int axis) { return lanes + (vector * 3 + axis) * kLightingLanes; };
     for (std::size_t first = begin; first < end; first += kLightingLanes) {
         const std::size_t n = std::min(kLightingLanes, end - first);
+        const auto vertex = [&](std::size_t lane) -> Varyings<Real>& { return varyings[first + (lane < n ? lane : 0)]; };
         for (std::size_t k = 0; k < count; ++k) {
-            Real* x = lane(k, 0);
-            Real* y = lane(k, 1);
-            Real* z = lane(k, 2);
-            for (std::size_t i = 0; i < n; ++i) {
-                const Vec3<Real>& point = varyings[first + i].position;
+            for (std::size_t i = 0; i < kLightingLanes; ++i) {
+                const Vec3<Real>& point = vertex(i).position;
                 // LightVectorsAt::compute()'s differences: light - point, and -point for the eye at the origin.
-                const Vec3<Real> d = k < lights.size() ? lights[k].position - point : -point;
-                x[i] = d.x;
-                y[i] = d.y;
-                z[i] = d.z;
+                lanes[k].set(i, k < lights.size() ? lights[k].position - point : -point);
             }
-            safe_normalize_lanes(n, x, y, z);
+            safe_normalize_lanes(kLightingLanes, lanes[k].axis[0], lanes[k].axis[1], lanes[k].axis[2]);
+        }
+        if (shader.effects.specular && shader.rig->eye_at_infinity) {
+            for (std::size_t i = 0; i < kLightingLanes; ++i) to_eye.set(i, kEyeAtInfinity<Real>);  // orthographic: V = -f
+        }
+        if (materials.vertex_surfaces == nullptr) {
+            for (std::size_t i = 0; i < kLightingLanes; ++i) {
+                in.normal.set(i, vertex(i).normal);
+                in.color.set(i, vertex(i).color);
+            }
+            shade_with_lanes(shader, in, lit);
+            for (std::size_t i = 0; i < n; ++i) varyings[first + i].lit = lit.get(i);
+            continue;
         }
         for (std::size_t i = 0; i < n; ++i) {
-            for (std::size_t k = 0; k < lights.size(); ++k) vectors.to_light[k] = {lane(k, 0)[i], lane(k, 1)[i], lane(k, 2)[i]};
-            if (shader.effects.specular) {
-                vectors.to_eye = shader.rig->eye_at_infinity
-                                     ? kEyeAtInfinity<Real>  // orthographic: V = -f
-                                     : Vec3<Real>(lane(lights.size(), 0)[i], lane(lights.size(), 1)[i],
-                                                  lane(lights.size(), 2)[i]);
-            }
+            for (std::size_t k = 0; k < lights.size(); ++k) vectors.to_light[k] = lanes[k].get(i);
+            if (shader.effects.specular) vectors.to_eye = to_eye.get(i);
             Varyings<Real>& v = varyings[first + i];
             v.lit = materials.shader_of(shader, first + i).shade_with(vectors, v.normal, v.color);
         }

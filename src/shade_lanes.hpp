@@ -1,0 +1,141 @@
+// The specialised lighting formula for several points at once (internal header).
+//
+// shade_terms<Real, A, D, S> (shading.hpp) lights one point with scalar glm
+// arithmetic; Gouraud lights a vertex (exact light vectors) or a triangle's
+// three corners (the seed's centroid vectors) that way. Here
+// the same operations, in the same order, run lane by lane over arrays the
+// compiler vectorises, so each lane's result is shade_terms' bit for bit
+// (the library builds with -ffp-contract=off: no lane fuses what the scalar
+// code rounds twice). Only std::pow stays per lane, and is called only where
+// the scalar code calls it.
+#ifndef PHONGRAST_SRC_SHADE_LANES_HPP
+#define PHONGRAST_SRC_SHADE_LANES_HPP
+
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+
+#include "shading.hpp"
+
+namespace phongrast::detail {
+
+/// Three coordinates of N points, one array per axis.
+template <typename Real, std::size_t N>
+struct AxisLanes {
+    Real axis[3][N];
+
+    void set(std::size_t lane, const Vec3<Real>& v) {
+        axis[0][lane] = v.x;
+        axis[1][lane] = v.y;
+        axis[2][lane] = v.z;
+    }
+    Vec3<Real> get(std::size_t lane) const { return {axis[0][lane], axis[1][lane], axis[2][lane]}; }
+};
+
+/// What N points are lit from: the unit vectors to each active light and to
+/// the eye (kEyeAtInfinity when the camera is orthographic), and each point's
+/// normal and colour: LightVectorsAt and shade_with()'s arguments, in lanes.
+template <typename Real, std::size_t N>
+struct ShadeLanesInput {
+    const AxisLanes<Real, N>* to_light = nullptr;  ///< one per active light
+    const AxisLanes<Real, N>* to_eye = nullptr;    ///< read only with specular on
+    AxisLanes<Real, N> normal;
+    AxisLanes<Real, N> color;
+};
+
+/// shade_terms<Real, Ambient, Diffuse, Specular> of every lane into `out`.
+template <typename Real, std::size_t N, bool Ambient, bool Diffuse, bool Specular>
+void shade_terms_lanes(const LightRig<Real>& rig, const ShadeLanesInput<Real, N>& in, AxisLanes<Real, N>& out) {
+    // shade_terms' `Vec3 result(0)` and its `+=`: starting from zero and adding
+    // keeps the sign of a zero sum as the scalar code does.
+    for (int c = 0; c < 3; ++c) {
+        for (std::size_t l = 0; l < N; ++l) out.axis[c][l] = Real(0);
+    }
+    if constexpr (Ambient) {
+        for (int c = 0; c < 3; ++c) {
+            const Real factor = rig.ambient_factor[c];
+            for (std::size_t l = 0; l < N; ++l) out.axis[c][l] += factor * in.color.axis[c][l];
+        }
+    }
+    if constexpr (Diffuse || Specular) {
+        const Vec3<Real> kd(rig.material.kd), ks(rig.material.ks);
+        const Real exponent = static_cast<Real>(rig.material.n);
+        const Real threshold = grazing_threshold<Real>();
+        const Real(&n)[3][N] = in.normal.axis;
+        // A local copy of the colours: GCC reads an array in only some lanes (the
+        // diffuse term's) only from one whose size it knows; else that loop would not vectorise.
+        Real local_color[3][N];
+        if constexpr (Diffuse) std::memcpy(local_color, in.color.axis, sizeof local_color);
+        Real(&sum)[3][N] = out.axis;
+        for (std::size_t k = 0; k < rig.active_lights.size(); ++k) {
+            const Real(&to_light)[3][N] = in.to_light[k].axis;
+            const Vec3<Real>& intensity = rig.active_lights[k].intensity;
+            const Real intensity_kd[3] = {intensity[0] * kd[0], intensity[1] * kd[1], intensity[2] * kd[2]};
+            Real n_dot_l[N], r_dot_v[N];
+            Real facing[N], lit[N];  // 1 where N.L passes the grazing threshold / the specular term is added, else 0
+            const Real(&eye)[3][N] = Specular ? in.to_eye->axis : in.normal.axis;  // unread without specular
+            for (std::size_t l = 0; l < N; ++l) {
+                // glm::dot: (x + y) + z.
+                n_dot_l[l] = (n[0][l] * to_light[0][l] + n[1][l] * to_light[1][l]) + n[2][l] * to_light[2][l];
+                facing[l] = n_dot_l[l] > threshold ? Real(1) : Real(0);
+            }
+            if constexpr (Diffuse) {  // diffuse_from_direction()
+                for (std::size_t l = 0; l < N; ++l) {
+                    const bool lights = facing[l] != Real(0);
+                    sum[0][l] += lights ? intensity_kd[0] * local_color[0][l] * n_dot_l[l] : Real(0);
+                    sum[1][l] += lights ? intensity_kd[1] * local_color[1][l] * n_dot_l[l] : Real(0);
+                    sum[2][l] += lights ? intensity_kd[2] * local_color[2][l] * n_dot_l[l] : Real(0);
+                }
+            }
+            if constexpr (Specular) {  // specular_from_direction(), up to the power
+                for (std::size_t l = 0; l < N; ++l) {
+                    const Real eye_length2 = (eye[0][l] * eye[0][l] + eye[1][l] * eye[1][l]) + eye[2][l] * eye[2][l];
+                    const Real eye_ok = eye_length2 != Real(0) ? Real(1) : Real(0);
+                    lit[l] = facing[l] != Real(0) ? eye_ok : Real(0);
+                    const Real rx = Real(2) * n[0][l] * n_dot_l[l] - to_light[0][l];
+                    const Real ry = Real(2) * n[1][l] * n_dot_l[l] - to_light[1][l];
+                    const Real rz = Real(2) * n[2][l] * n_dot_l[l] - to_light[2][l];
+                    const Real d = (rx * eye[0][l] + ry * eye[1][l]) + rz * eye[2][l];
+                    const Real at_least_zero = Real(0) < d ? d : Real(0);             // std::max(0, d)
+                    r_dot_v[l] = at_least_zero < Real(1) ? at_least_zero : Real(1);  // std::min(1, .)
+                }
+                const Real intensity_ks[3] = {intensity[0] * ks[0], intensity[1] * ks[1], intensity[2] * ks[2]};
+                Real highlight[N];
+                for (std::size_t l = 0; l < N; ++l) {
+                    highlight[l] = lit[l] != Real(0) ? std::pow(r_dot_v[l], exponent) : Real(0);
+                }
+                for (std::size_t l = 0; l < N; ++l) {
+                    sum[0][l] += lit[l] != Real(0) ? intensity_ks[0] * highlight[l] : Real(0);
+                    sum[1][l] += lit[l] != Real(0) ? intensity_ks[1] * highlight[l] : Real(0);
+                    sum[2][l] += lit[l] != Real(0) ? intensity_ks[2] * highlight[l] : Real(0);
+                }
+            }
+        }
+    }
+}
+
+/// PointShader::shade_with() of every lane (a specialised shader).
+template <typename Real, std::size_t N>
+void shade_with_lanes(const PointShader<Real>& shader, const ShadeLanesInput<Real, N>& in, AxisLanes<Real, N>& out) {
+    const EffectSet& effects = shader.effects;
+    const LightRig<Real>& rig = *shader.rig;
+    const int key = (effects.ambient ? 4 : 0) | (effects.diffuse ? 2 : 0) | (effects.specular ? 1 : 0);
+    switch (key) {
+        case 0: return shade_terms_lanes<Real, N, false, false, false>(rig, in, out);
+        case 1: return shade_terms_lanes<Real, N, false, false, true>(rig, in, out);
+        case 2: return shade_terms_lanes<Real, N, false, true, false>(rig, in, out);
+        case 3: return shade_terms_lanes<Real, N, false, true, true>(rig, in, out);
+        case 4: return shade_terms_lanes<Real, N, true, false, false>(rig, in, out);
+        case 5: return shade_terms_lanes<Real, N, true, false, true>(rig, in, out);
+        case 6: return shade_terms_lanes<Real, N, true, true, false>(rig, in, out);
+        default: return shade_terms_lanes<Real, N, true, true, true>(rig, in, out);
+    }
+}
+
+/// Active lights up to which points are lit in lanes (their vectors live on
+/// the stack); with more, the callers light point by point.
+constexpr std::size_t kMaxLaneLights = 8;
+
+}  // namespace phongrast::detail
+
+#endif  // PHONGRAST_SRC_SHADE_LANES_HPP
