@@ -100,9 +100,18 @@ void shade_terms_lanes(const LightRig<Real>& rig, const ShadeLanesInput<Real, N>
                     r_dot_v[l] = at_least_zero < Real(1) ? at_least_zero : Real(1);  // std::min(1, .)
                 }
                 const Real intensity_ks[3] = {intensity[0] * ks[0], intensity[1] * ks[1], intensity[2] * ks[2]};
-                Real highlight[N];
+                // The power only where the scalar code takes it, found without a
+                // branch per lane first: lit lanes come and go at random, and a branch on each mispredicts often.
+                std::size_t lit_lanes[N];
+                std::size_t lit_count = 0;
                 for (std::size_t l = 0; l < N; ++l) {
-                    highlight[l] = lit[l] != Real(0) ? std::pow(r_dot_v[l], exponent) : Real(0);
+                    lit_lanes[lit_count] = l;
+                    lit_count += lit[l] != Real(0) ? 1 : 0;
+                }
+                Real highlight[N];
+                for (std::size_t l = 0; l < N; ++l) highlight[l] = Real(0);
+                for (std::size_t i = 0; i < lit_count; ++i) {
+                    highlight[lit_lanes[i]] = std::pow(r_dot_v[lit_lanes[i]], exponent);
                 }
                 for (std::size_t l = 0; l < N; ++l) {
                     sum[0][l] += lit[l] != Real(0) ? intensity_ks[0] * highlight[l] : Real(0);

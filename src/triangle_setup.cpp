@@ -11,6 +11,7 @@
 #include "painter_order.hpp"
 #include "prefetch.hpp"
 #include "raster.hpp"
+#include "seed_corner_batch.hpp"
 #include "term_counts.hpp"
 
 namespace phongrast::detail {
@@ -43,6 +44,23 @@ public:
         : in_(input), vertices_(input.vertices), out_(out), clip_vertices_(clip_vertices), counts_(counts),
           vectors_(vectors), same_lit_(same_lit_everywhere()),
           in_parts_(input.scene.shader == Shader::gouraud && input.textures != nullptr) {}
+
+    /// Seed Gouraud: lights whole triangles' corners in `batch` (which lights
+    /// them when full; light_batched_corners() lights the rest) rather than one
+    /// triangle at a time, when one specialised shader lights every triangle.
+    /// Returns whether it does: then a draw's `lit` is written only by then.
+    bool batch_seed_corners(SeedCornerBatch<Real>& batch) {
+        const bool seed_gouraud = in_.scene.shader == Shader::gouraud &&
+                                  in_.options.light_vectors == LightVectors::triangle_centroid;
+        if (seed_gouraud && !in_parts_ && !same_lit_ && in_.triangle_surfaces == nullptr &&
+            SeedCornerBatch<Real>::can_light(in_.shader)) {
+            seed_batch_ = &batch;
+        }
+        return seed_batch_ != nullptr;
+    }
+    void light_batched_corners() {
+        if (seed_batch_ != nullptr) seed_batch_->light(in_.shader, out_);
+    }
 
     // Both paths, whole and clipped, make their pieces with set_up_piece()
     // and are counted and flat-lit here.
@@ -184,6 +202,12 @@ private:
         if (in_.scene.shader == Shader::gouraud && in_.options.light_vectors == LightVectors::triangle_centroid) {
             if (same_lit_) {
                 counts_.lit_points += 3;  // lit like the corners below, to the colour set_up_piece() wrote
+            } else if (seed_batch_ != nullptr) {
+                counts_.lit_points += 3;
+                const bool full = seed_batch_->add(out_.size(), centroid);
+                out_.push_back(draw);
+                if (full) seed_batch_->light(in_.shader, out_);
+                return;
             } else {
                 // Lit copies of the corners: light_corners() writes their `lit`, the mesh's vertices stay as they are.
                 Varyings<Real> copies[3] = {*draw.v[0], *draw.v[1], *draw.v[2]};
@@ -395,6 +419,7 @@ private:
     /// Textured Gouraud: every draw's lit[i] is its corner's A (or whole lit
     /// colour on a face without texture), S and (s, t) are in the corners' varyings.
     const bool in_parts_;
+    SeedCornerBatch<Real>* seed_batch_ = nullptr;  ///< batch_seed_corners()
 };
 
 /// Records where the draws of the triangle just set up are, and its painter's-order key.
@@ -487,6 +512,8 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
         draws.chunk_clip_vertices[chunk].clear();
         TriangleSetup<Real> setup(input, out, draws.chunk_clip_vertices[chunk], draws.chunk_counts[chunk],
                                   draws.chunk_vectors[chunk]);
+        SeedCornerBatch<Real> seed_batch;
+        setup.batch_seed_corners(seed_batch);
         RecordPages<FillTriangle<Real>> pages(draws.chunk_mapped[chunk]);
         for (std::size_t t = begin; t < end; ++t) {
             if (!mapped) pages.map_ahead(out, end - t);
@@ -495,6 +522,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
             if (out.size() == first) continue;
             record_drawn(out, first, chunk, painter_key(triangles[t], screen), drawn, keys);
         }
+        setup.light_batched_corners();
         if (!mapped) pages.release_unwritten(out);
         progress.piece_done();
     });
@@ -576,7 +604,7 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     const FrameVector<ScreenVertex>& screen = input.vertices.screen;
     ChunkVector<FillTriangle<Real>>& out = scratch.draws;
     out.clear();
-    out.reserve(8);  // a clipped triangle's fan has at most 6 pieces: no allocation per triangle
+    out.reserve(6 * kSeedBatch);  // a clipped triangle's fan has at most 6 pieces: no allocation per triangle
     ClipVertexStore<Real>& clip_vertices = scratch.clip_vertices;
     // The triangles this part owns are counted; the others it sets up only to fill their rows here.
     scratch.counts = SetupCounts{};
@@ -592,6 +620,32 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     const FrameVector<Varyings<Real>>& varyings = input.vertices.varyings;
     const double columns = target.image.columns;
     const std::size_t row_length = static_cast<std::size_t>(target.image.columns);
+    // Seed Gouraud lights the corners of several triangles at once: their
+    // draws wait in `out` (queued below) until then, and are filled in mesh order.
+    SeedCornerBatch<Real> seed_batch;
+    const bool batched = owned_setup.batch_seed_corners(seed_batch) && shared_setup.batch_seed_corners(seed_batch);
+    struct QueuedTriangle {
+        std::size_t first_draw, end_draw;
+        std::uint64_t key;
+        std::uint32_t tie;
+    };
+    QueuedTriangle queue[kSeedBatch];
+    std::size_t queued = 0;
+    const auto fill_queued = [&] {
+        owned_setup.light_batched_corners();  // both share seed_batch: lights every queued draw
+        for (std::size_t q = 0; q < queued; ++q) {
+            if (fill.ranked) {
+                target.key = queue[q].key;
+                target.tie = queue[q].tie;
+            }
+            for (std::size_t d = queue[q].first_draw; d < queue[q].end_draw; ++d) {
+                fill.kernel(out[d], target, *fill.vectors, *fill.constants);
+            }
+        }
+        queued = 0;
+        out.clear();
+        clip_vertices.clear();
+    };
     for (std::size_t chunk = 0; chunk < chunks && !progress.cancelled(); ++chunk) {
         const std::size_t end = std::min(triangles.size(), (chunk + 1) * kSetupChunk);
         for (std::size_t t = chunk * kSetupChunk; t < end; ++t) {
@@ -630,16 +684,31 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
                     for (std::uint32_t vertex : ahead) prefetch_object(&varyings[vertex]);
                 }
             }
-            out.clear();
-            clip_vertices.clear();  // the draws pointing there are filled before the next triangle
+            if (!batched) {
+                out.clear();
+                clip_vertices.clear();  // the draws pointing there are filled before the next triangle
+            }
+            const std::size_t first_draw = out.size();
             (owned ? owned_setup : shared_setup).run(static_cast<std::uint32_t>(t));
-            if (out.empty()) continue;
+            if (out.size() == first_draw) continue;
+            std::uint64_t key = 0;
+            std::uint32_t tie = 0;
             if (fill.ranked) {
-                target.key = painter_key(tri, screen);
-                target.tie = fill.original_triangle != nullptr ? fill.original_triangle[t] : static_cast<std::uint32_t>(t);
+                key = painter_key(tri, screen);
+                tie = fill.original_triangle != nullptr ? fill.original_triangle[t] : static_cast<std::uint32_t>(t);
+            }
+            if (batched) {
+                queue[queued++] = {first_draw, out.size(), key, tie};
+                if (queued == kSeedBatch) fill_queued();
+                continue;
+            }
+            if (fill.ranked) {
+                target.key = key;
+                target.tie = tie;
             }
             for (const FillTriangle<Real>& draw : out) fill.kernel(draw, target, *fill.vectors, *fill.constants);
         }
+        if (batched) fill_queued();
         progress.piece_done();
     }
 }
