@@ -38,15 +38,9 @@ private:
 Scene sphere_across_the_border(bool orthographic) {
     Scene scene;
     scene.mesh = test_meshes::uv_sphere(60, 120, 1.0);
-    for (const glm::dvec3& p : scene.mesh.positions) {
-        scene.mesh.colors.push_back(glm::vec3(0.5 + 0.5 * p.x, 0.5 + 0.5 * p.y, 0.3 + 0.2 * p.z));
-    }
-    scene.camera.eye = {0.4, 0.5, 2.6};
-    scene.camera.focal = 2;
-    scene.camera.sensor_height = scene.camera.sensor_width = 1.4;
-    if (orthographic) {
-        scene.camera = Camera::orthographic({0.4, 0.5, 2.6}, {0, 0, 0}, {0, 1, 0}, 1.6, 1.6);
-    }
+    test_meshes::color_by_position(scene.mesh);
+    scene.camera = orthographic ? Camera::orthographic({0.4, 0.5, 2.6}, {0, 0, 0}, {0, 1, 0}, 1.6, 1.6)
+                                : Camera::look_at({0.4, 0.5, 2.6}, {0, 0, 0}, {0, 1, 0}, 2, 1.4, 1.4);
     scene.image = {80, 96, {0.1f, 0.2f, 0.3f}};
     scene.shader = Shader::gouraud;
     scene.material.n = 20;
