@@ -48,7 +48,8 @@ public:
     /// Seed Gouraud: lights whole triangles' corners in `batch` (which lights
     /// them when full; light_batched_corners() lights the rest) rather than one
     /// triangle at a time, when one specialised shader lights every triangle.
-    /// Returns whether it does: then a draw's `lit` is written only by then.
+    /// Returns whether it batches: if so, a whole triangle's draw has its `lit`
+    /// only once its batch is lit.
     bool batch_seed_corners(SeedCornerBatch<Real>& batch) {
         const bool seed_gouraud = in_.scene.shader == Shader::gouraud &&
                                   in_.options.light_vectors == LightVectors::triangle_centroid;
@@ -604,7 +605,9 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     const FrameVector<ScreenVertex>& screen = input.vertices.screen;
     ChunkVector<FillTriangle<Real>>& out = scratch.draws;
     out.clear();
-    out.reserve(6 * kSeedBatch);  // a clipped triangle's fan has at most 6 pieces: no allocation per triangle
+    // A clipped triangle's fan has at most 6 pieces, and seed Gouraud queues up
+    // to kSeedBatch triangles (below): no allocation per triangle.
+    out.reserve(6 * kSeedBatch);
     ClipVertexStore<Real>& clip_vertices = scratch.clip_vertices;
     // The triangles this part owns are counted; the others it sets up only to fill their rows here.
     scratch.counts = SetupCounts{};
