@@ -6,7 +6,7 @@
 // in scalar glm arithmetic, were a quarter of such a frame on a mesh of small
 // triangles. Set-up instead leaves a whole triangle's `lit` for later and
 // notes it here; light() then lights the corners of up to kSeedBatch
-// triangles in vector loops (safe_normalize_lanes(), shade_with_lanes()):
+// triangles in vector loops (light_vectors_lanes(), shade_with_lanes()):
 // the same operations in the same order as PointShader's, so the same bits.
 #ifndef PHONGRAST_SRC_SEED_CORNER_BATCH_HPP
 #define PHONGRAST_SRC_SEED_CORNER_BATCH_HPP
@@ -16,7 +16,6 @@
 
 #include "chunk_arena.hpp"
 #include "fill_types.hpp"
-#include "normalize_lanes.hpp"
 #include "shade_lanes.hpp"
 
 namespace phongrast::detail {
@@ -57,24 +56,16 @@ public:
         AxisLanes<Real, N>& to_eye = vectors[lights.size()];
         if (shader.effects.normals) {  // else no vector is read (PointShader::compute_vectors())
             // Normalised once per triangle, then given to its three corners' lanes.
-            const bool eye_at_centroid = shader.effects.specular && !shader.rig->eye_at_infinity;
-            AxisLanes<Real, kSeedBatch> per_triangle;
-            for (std::size_t k = 0; k < lights.size() + (eye_at_centroid ? 1 : 0); ++k) {
-                for (std::size_t p = 0; p < kSeedBatch; ++p) {
-                    // LightVectorsAt::compute()'s differences: light - point, and -point for the eye at the origin.
-                    const Vec3<Real>& point = pending_[p < count_ ? p : 0].centroid;
-                    per_triangle.set(p, k < lights.size() ? lights[k].position - point : -point);
-                }
-                safe_normalize_lanes(kSeedBatch, per_triangle.axis[0], per_triangle.axis[1], per_triangle.axis[2]);
+            AxisLanes<Real, kSeedBatch> per_triangle[kMaxLaneLights + 1];
+            light_vectors_lanes(
+                shader, [&](std::size_t p) -> const Vec3<Real>& { return triangle(p).centroid; }, per_triangle);
+            for (std::size_t k = 0; k < lights.size() + (shader.effects.specular ? 1 : 0); ++k) {
                 for (int c = 0; c < 3; ++c) {
                     for (std::size_t corner = 0; corner < 3; ++corner) {
-                        std::memcpy(&vectors[k].axis[c][corner * kSeedBatch], per_triangle.axis[c],
-                                    sizeof per_triangle.axis[c]);
+                        std::memcpy(&vectors[k].axis[c][corner * kSeedBatch], per_triangle[k].axis[c],
+                                    sizeof per_triangle[k].axis[c]);
                     }
                 }
-            }
-            if (shader.effects.specular && shader.rig->eye_at_infinity) {
-                for (std::size_t l = 0; l < N; ++l) to_eye.set(l, kEyeAtInfinity<Real>);  // orthographic: V = -f
             }
         }
         ShadeLanesInput<Real, N> in;

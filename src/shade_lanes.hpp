@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstring>
 
+#include "normalize_lanes.hpp"
 #include "shading.hpp"
 
 namespace phongrast::detail {
@@ -42,6 +43,28 @@ struct ShadeLanesInput {
     AxisLanes<Real, N> normal;
     AxisLanes<Real, N> color;
 };
+
+/// LightVectorsAt::compute() for N points at once: the unit vectors from
+/// lane l's point (`point_of(l)`, camera space) to each of `shader`'s active
+/// lights into vectors[k], and with specular on to the eye into
+/// vectors[lights] (kEyeAtInfinity for an orthographic camera), normalised by
+/// safe_normalize_lanes(): the same bits. `vectors` has room for lights + 1.
+template <typename Real, std::size_t N, typename PointOf>
+void light_vectors_lanes(const PointShader<Real>& shader, const PointOf& point_of, AxisLanes<Real, N>* vectors) {
+    const std::vector<CameraLight<Real>>& lights = shader.rig->active_lights;
+    const bool eye_at_point = shader.effects.specular && !shader.rig->eye_at_infinity;
+    for (std::size_t k = 0; k < lights.size() + (eye_at_point ? 1 : 0); ++k) {
+        for (std::size_t l = 0; l < N; ++l) {
+            // compute()'s differences: light - point, and -point for the eye at the origin.
+            const Vec3<Real>& point = point_of(l);
+            vectors[k].set(l, k < lights.size() ? lights[k].position - point : -point);
+        }
+        safe_normalize_lanes(N, vectors[k].axis[0], vectors[k].axis[1], vectors[k].axis[2]);
+    }
+    if (shader.effects.specular && shader.rig->eye_at_infinity) {
+        for (std::size_t l = 0; l < N; ++l) vectors[lights.size()].set(l, kEyeAtInfinity<Real>);  // V = -f
+    }
+}
 
 /// shade_terms<Real, Ambient, Diffuse, Specular> of every lane into `out`.
 template <typename Real, std::size_t N, bool Ambient, bool Diffuse, bool Specular>

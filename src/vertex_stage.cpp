@@ -199,8 +199,8 @@ namespace {
 constexpr std::size_t kLightingLanes = 64;
 
 /// Specialised lighting of vertices [begin, end), kLightingLanes at a time:
-/// the vectors to every active light and to the eye are normalised by
-/// safe_normalize_lanes(), then the vertices are shaded by shade_with_lanes()
+/// the vectors to every active light and to the eye by light_vectors_lanes(),
+/// then the vertices are shaded by shade_with_lanes()
 /// (one material) or vertex by vertex (materials per vertex): what
 /// PointShader computes vertex by vertex, bit for bit. A last, partial group
 /// fills its other lanes with copies of its first vertex.
@@ -209,7 +209,6 @@ void light_vertex_lanes(const PointShader<Real>& shader, const VertexMaterials<R
                         FrameVector<Varyings<Real>>& varyings, std::size_t begin, std::size_t end,
                         LightVectorsAt<Real>& vectors) {
     const std::vector<CameraLight<Real>>& lights = shader.rig->active_lights;
-    const std::size_t count = lights.size() + 1;  // the lights, then the eye
     AxisLanes<Real, kLightingLanes> lanes[kMaxLaneLights + 1];
     AxisLanes<Real, kLightingLanes>& to_eye = lanes[lights.size()];
     ShadeLanesInput<Real, kLightingLanes> in;
@@ -220,17 +219,8 @@ void light_vertex_lanes(const PointShader<Real>& shader, const VertexMaterials<R
     for (std::size_t first = begin; first < end; first += kLightingLanes) {
         const std::size_t n = std::min(kLightingLanes, end - first);
         const auto vertex = [&](std::size_t lane) -> Varyings<Real>& { return varyings[first + (lane < n ? lane : 0)]; };
-        for (std::size_t k = 0; k < count; ++k) {
-            for (std::size_t i = 0; i < kLightingLanes; ++i) {
-                const Vec3<Real>& point = vertex(i).position;
-                // LightVectorsAt::compute()'s differences: light - point, and -point for the eye at the origin.
-                lanes[k].set(i, k < lights.size() ? lights[k].position - point : -point);
-            }
-            safe_normalize_lanes(kLightingLanes, lanes[k].axis[0], lanes[k].axis[1], lanes[k].axis[2]);
-        }
-        if (shader.effects.specular && shader.rig->eye_at_infinity) {
-            for (std::size_t i = 0; i < kLightingLanes; ++i) to_eye.set(i, kEyeAtInfinity<Real>);  // orthographic: V = -f
-        }
+        light_vectors_lanes(
+            shader, [&](std::size_t lane) -> const Vec3<Real>& { return vertex(lane).position; }, lanes);
         if (materials.vertex_surfaces == nullptr) {
             for (std::size_t i = 0; i < kLightingLanes; ++i) {
                 in.normal.set(i, vertex(i).normal);
