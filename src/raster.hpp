@@ -30,6 +30,18 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+
+// Rows of a small triangle are solved by a mask of their centres' edge
+// tests, four at a time in SSE2 (x86-64's baseline; a kernel compiled for
+// AVX2 inlines the same instructions). Elsewhere rows are walked or solved
+// one edge at a time, with the same results.
+#if defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#define PHONGRAST_ROW_MASKS 1
+#include <emmintrin.h>
+#else
+#define PHONGRAST_ROW_MASKS 0
+#endif
 
 /// For the per-triangle code of the fill: inlined even into a kernel compiled
 /// for another instruction set (a baseline function may always be inlined
@@ -183,6 +195,13 @@ struct CoveredSpan {
 /// all three biased values are >= 0, i.e. when their bitwise OR is.
 class CoveredRows {
 public:
+    /// Rows of a bounding box of fewer columns than this may be solved by
+    /// masks (solves_rows_by_masks()).
+    static constexpr std::int64_t kMaskColumns = 32;
+    /// Else rows of a box of fewer columns than this are walked centre by
+    /// centre (cheaper than solving), wider ones solved one edge at a time.
+    static constexpr std::int64_t kWalkedSpanColumns = 16;
+
     PHONGRAST_ALWAYS_INLINE CoveredRows(const SnappedTriangle& t, int row_begin, int row_end)
         : first_row_(std::max(row_begin, t.row_min)),
           last_row_(std::min(row_end - 1, t.row_max)),
@@ -195,6 +214,9 @@ public:
         set_up_edge(0, v1, v2, origin_x, origin_y);
         set_up_edge(1, v2, v0, origin_x, origin_y);
         set_up_edge(2, v0, v1, origin_x, origin_y);
+#if PHONGRAST_ROW_MASKS
+        if (span_columns_ < kMaskColumns && !tiny() && !empty()) set_up_masks();
+#endif
     }
 
     /// No row of the range meets the bounding box.
@@ -203,6 +225,15 @@ public:
     int last_row() const { return last_row_; }
     /// The change of each edge value per column.
     const std::int64_t* step() const { return step_column_; }
+    /// Rows are solved by masks of their centres (covered_columns()): a box
+    /// under kMaskColumns columns whose edge values fit 32 bits.
+    bool solves_rows_by_masks() const {
+#if PHONGRAST_ROW_MASKS
+        return mask_groups_ > 0;
+#else
+        return false;
+#endif
+    }
     /// At most two rows and two columns of centres: tiny_spans() applies.
     bool tiny() const { return last_row_ - first_row_ < 2 && span_columns_ < 2; }
 
@@ -215,8 +246,16 @@ public:
         const std::int64_t row_offset = row - first_row_;
         for (int i = 0; i < 3; ++i) value[i] = biased_[i] + step_row_[i] * row_offset;
         std::int64_t k_lo = 0, k_hi = span_columns_;
-        if (span_columns_ < 16) {
-            // Narrow (under 16 columns): walk the row with incremental edge values; cheaper than dividing.
+#if PHONGRAST_ROW_MASKS
+        if (mask_groups_ > 0) {
+            const std::uint32_t covered = covered_columns(value);
+            if (covered == 0) return false;
+            k_lo = __builtin_ctz(covered);
+            k_hi = 31 - __builtin_clz(covered);
+        } else
+#endif
+        if (span_columns_ < kWalkedSpanColumns) {
+            // Narrow: walk the row with incremental edge values; cheaper than dividing.
             std::int64_t e0 = value[0], e1 = value[1], e2 = value[2];
             std::int64_t k = 0;
             for (; k <= span_columns_;
@@ -278,6 +317,50 @@ private:
         step_row_[i] = dx * kSubpixelScale;
     }
 
+#if PHONGRAST_ROW_MASKS
+    /// Enables covered_columns() when every edge value it would compute (the
+    /// box's rows in range, columns 0 to the last of its groups of four)
+    /// fits 32 bits, so that the 32-bit lanes give exactly the 64-bit
+    /// values' signs; else rows are solved as before.
+    void set_up_masks() {
+        const int groups = static_cast<int>(span_columns_ / 4 + 1);
+        const std::int64_t last_lane = 4 * groups - 1, last_row = last_row_ - first_row_;
+        for (int i = 0; i < 3; ++i) {
+            // The edge function is linear, so no value in the box exceeds this.
+            const std::int64_t bound =
+                std::abs(biased_[i]) + std::abs(step_row_[i]) * last_row + std::abs(step_column_[i]) * last_lane;
+            if (bound > INT32_MAX) return;
+        }
+        for (int i = 0; i < 3; ++i) {
+            const auto step = static_cast<std::int32_t>(step_column_[i]);
+            lane_offset_[i] = _mm_setr_epi32(0, step, 2 * step, 3 * step);
+            group_step_[i] = _mm_set1_epi32(4 * step);
+        }
+        valid_columns_ = span_columns_ == 31 ? ~std::uint32_t(0)
+                                              : (std::uint32_t(1) << (span_columns_ + 1)) - std::uint32_t(1);
+        mask_groups_ = groups;
+    }
+
+    /// Bit k set where column k of a row whose biased values at column 0
+    /// are `value` is covered: all three values >= 0, i.e. the sign of
+    /// their OR clear. No branch per column, so the span's ends cost no
+    /// mispredicted branch as a walk's do.
+    PHONGRAST_ALWAYS_INLINE std::uint32_t covered_columns(const std::int64_t* value) const {
+        __m128i e0 = _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value[0])), lane_offset_[0]);
+        __m128i e1 = _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value[1])), lane_offset_[1]);
+        __m128i e2 = _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value[2])), lane_offset_[2]);
+        std::uint32_t outside = 0;
+        for (int group = 0; group < mask_groups_; ++group) {
+            const __m128i any = _mm_or_si128(_mm_or_si128(e0, e1), e2);
+            outside |= static_cast<std::uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(any))) << (4 * group);
+            e0 = _mm_add_epi32(e0, group_step_[0]);
+            e1 = _mm_add_epi32(e1, group_step_[1]);
+            e2 = _mm_add_epi32(e2, group_step_[2]);
+        }
+        return ~outside & valid_columns_;
+    }
+#endif
+
     /// tiny_spans() for one row whose biased values at the first column are `left`: 0 or 1 span.
     PHONGRAST_ALWAYS_INLINE int tiny_row(int row, const std::int64_t* left, CoveredSpan* span) const {
         // Scalars, not arrays: GCC would otherwise pair these up in vector
@@ -302,6 +385,12 @@ private:
     std::int64_t biased_[3];     ///< edge values at the first row's first centre, minus the thresholds
     std::int64_t step_column_[3], step_row_[3];
     std::int64_t threshold_[3];  ///< 0 for a top or left edge, else 1
+#if PHONGRAST_ROW_MASKS
+    int mask_groups_ = 0;  ///< groups of four columns covered_columns() tests; 0: rows are not solved by masks
+    std::uint32_t valid_columns_ = 0;  ///< bit k set for the box's columns k
+    __m128i lane_offset_[3];           ///< step_column_ times 0, 1, 2, 3
+    __m128i group_step_[3];            ///< step_column_ times 4
+#endif
 };
 
 /// False when a set-up triangle whose bounding box holds at most 2 x 2
