@@ -332,9 +332,12 @@ private:
             if (bound > INT32_MAX) return;
         }
         for (int i = 0; i < 3; ++i) {
-            const auto step = static_cast<std::int32_t>(step_column_[i]);
-            lane_offset_[i] = _mm_setr_epi32(0, step, 2 * step, 3 * step);
-            group_step_[i] = _mm_set1_epi32(4 * step);
+            // Products in 64 bits: 4 x step may not fit 32 when a box has one group (it is then
+            // only added after the last group, in lanes that wrap harmlessly and are not read).
+            const std::int64_t step = step_column_[i];
+            lane_offset_[i] = _mm_setr_epi32(0, static_cast<std::int32_t>(step), static_cast<std::int32_t>(2 * step),
+                                             static_cast<std::int32_t>(3 * step));
+            group_step_[i] = _mm_set1_epi32(static_cast<std::int32_t>(4 * step));
         }
         valid_columns_ = span_columns_ == 31 ? ~std::uint32_t(0)
                                               : (std::uint32_t(1) << (span_columns_ + 1)) - std::uint32_t(1);
