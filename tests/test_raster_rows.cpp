@@ -3,7 +3,10 @@
 // edge values fit 32 bits, a walk along narrow rows, a bound per edge on
 // wide ones) against every centre tested on its own from scratch: the same
 // spans and edge values, at any position, in any band of rows.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -88,4 +91,23 @@ TEST_CASE("rows of larger triangles: masks, walks and bounds find every centre t
     CHECK(narrow_walked > 30);
     CHECK(wide > 1000);
     CHECK(spans_compared > 100000);
+}
+
+TEST_CASE("rows by masks: a tall box of one group of columns, whose column step times four needs more than 32 bits") {
+    // A vertical edge 9000 rows long through column 0's centres and a third corner 1.5 columns to the right: in a band
+    // of 16 rows the box's edge values fit 32 bits (masks), while four times the long edge's step per column does not.
+    const int rows = 9001, columns = 8;
+    CoverageTriangle t;
+    REQUIRE(setup_coverage(snap(0.5, 0.0), snap(0.5, 9000.0), snap(2.0, 4500.0), rows, columns, t));
+    std::int64_t largest_step = 0;
+    for (int band_begin = 4400; band_begin < 4600; band_begin += 16) {
+        const CoveredRows band(t, band_begin, band_begin + 16);
+        REQUIRE(band.solves_rows_by_masks() == (PHONGRAST_ROW_MASKS == 1));
+        for (int i = 0; i < 3; ++i) largest_step = std::max(largest_step, std::abs(band.step()[i]));
+        const std::vector<CoveredSpan> solved = solved_spans(band);
+        REQUIRE(solved.size() == 16);
+        REQUIRE(same_spans(solved, brute_force_spans(t, band.first_row(), band.last_row())));
+    }
+    CHECK(4 * largest_step > std::int64_t(INT32_MAX));
+    CHECK(3 * largest_step <= std::int64_t(INT32_MAX));
 }
