@@ -158,6 +158,33 @@ void normals_in_caller_order(const Mesh& mesh, MeshOrder& order, const std::func
     gather(order.normals, order.vertex_source, out.normals, poll);
 }
 
+/// order.scene.mesh's positions, colours and normals, computed or kept
+/// (MeshOrder::kept_normals), once the copy's triangles are made.
+void copy_vertex_arrays_and_normals(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll) {
+    Mesh& out = order.scene.mesh;
+    MeshOrder::KeptNormals& kept = order.kept_normals;
+    // Positions equal to those kept, gathered through the same permutation,
+    // are the copy's already; the colours play no part in the normals.
+    gather(mesh.colors, order.vertex_source, out.colors, poll);
+    if (!(kept.permutation == order.permutations_computed && kept.source.matches(mesh))) {
+        kept.source.valid = false;  // until computed whole (a cancel may stop it halfway)
+        gather(mesh.positions, order.vertex_source, out.positions, poll);
+        normals_in_caller_order(mesh, order, poll);
+        ++order.normals_computed;
+        kept.source.remember(mesh);
+        kept.permutation = order.permutations_computed;
+        if (kept.source.valid) {
+            kept.normals.assign(out.normals.begin(), out.normals.end());
+        } else {
+            std::vector<glm::vec3>().swap(kept.normals);  // too large to keep
+        }
+    } else {
+        // The copy's normals may hold the last frame's given ones.
+        out.normals.assign(kept.normals.begin(), kept.normals.end());
+    }
+    if (!mesh.normals.empty()) keep_given_normals(mesh.normals, order.vertex_source, out.normals);
+}
+
 constexpr std::size_t kNoOverride = std::numeric_limits<std::size_t>::max() - 1;
 std::atomic<std::size_t> g_reorder_min_triangles{kNoOverride};
 std::atomic<bool> g_reorder_always{false};
@@ -346,15 +373,12 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
     const bool needed = needs_normals(scene, options);
     const bool computes_normals = needed && (mesh.normals.empty() || has_zero_normal(mesh.normals));
     order.vertex_arrays_copied = computes_normals;
-    if (computes_normals) {
-        gather(mesh.positions, order.vertex_source, out.positions, poll);
-        gather(mesh.colors, order.vertex_source, out.colors, poll);
-    } else {
+    if (!computes_normals) {
+        order.kept_normals.source.valid = false;  // they go with the positions they were computed from
         std::vector<glm::dvec3>().swap(out.positions);
         std::vector<glm::vec3>().swap(out.colors);
         std::vector<glm::vec3>().swap(out.normals);
     }
-    report();
     // The copy's triangles depend on the caller's triangles and the
     // permutation only: made again when the caller's differ from the snapshot
     // they were made from (a sequential comparison, where making them reads
@@ -370,12 +394,12 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
         order.triangles_copied = true;
     }
     report();
-    // Computed normals, with the caller's mesh's bits. The vertex stage then
-    // finds no zero normal to compute but where every order computes zero (a
-    // vertex whose faces all have zero length: the sums' order cannot matter).
+    // Computed normals, with the caller's mesh's bits: a zero one is zero in
+    // every order (a vertex whose faces all have zero length: the sums' order
+    // cannot matter), so the vertex stage takes them as final.
     if (computes_normals) {
-        normals_in_caller_order(mesh, order, poll);
-        if (!mesh.normals.empty()) keep_given_normals(mesh.normals, order.vertex_source, out.normals);
+        copy_vertex_arrays_and_normals(mesh, order, poll);
+        report();
     }
     // Contract version 2's per-triangle attributes follow their triangles.
     out.texcoords = mesh.texcoords;

@@ -102,9 +102,11 @@ struct MeshOrder {
     /// The caller's index of each triangle the pipeline sees, or null when it sees the caller's mesh.
     const std::uint32_t* original_triangles() const { return reordered ? triangle_source.data() : nullptr; }
     /// Where the vertex stage reads the vertex arrays: the caller's, when the copy holds triangles only.
+    /// When the copy holds the vertex arrays, its normals are final (computed here).
     CallerVertices caller_vertices() const {
-        return reordered && !vertex_arrays_copied ? CallerVertices{caller_mesh, vertex_source.data()}
-                                                  : CallerVertices{};
+        if (!reordered) return CallerVertices{};
+        return vertex_arrays_copied ? CallerVertices{nullptr, nullptr, true}
+                                    : CallerVertices{caller_mesh, vertex_source.data(), false};
     }
     /// The caller's scene with the mesh in internal order: triangles made
     /// when the caller's changed; vertex arrays gathered every frame when
@@ -125,6 +127,20 @@ struct MeshOrder {
     /// Normals computed in the caller's order, then permuted: only for a mesh
     /// too large for vertex_corners (kVertexCornersMaxTriangles).
     std::vector<glm::vec3> normals;
+    /// The copy's computed normals (before given ones replace them), kept for
+    /// the next frame while the caller's positions and triangles compare equal
+    /// to those they were computed from, under the same permutation: a
+    /// Renderer's frames of a mesh without normals (or with zero ones) compute
+    /// them once, and gather its positions once. Meshes of at most
+    /// kReusedNormalsMaxTriangles triangles (24 + 12 bytes per vertex, 12 per
+    /// triangle).
+    struct KeptNormals {
+        ComputedNormalsSource source;
+        std::size_t permutation = 0;  ///< permutations_computed when computed
+        std::vector<glm::vec3> normals;
+    } kept_normals;
+    /// Times the copy's normals were computed (tests: once while the mesh is unchanged).
+    std::size_t normals_computed = 0;
     /// Permutations computed so far (tests: a Renderer computes one per mesh).
     std::size_t permutations_computed = 0;
     /// Times the copy's triangles were made (tests: once per permutation and edit).

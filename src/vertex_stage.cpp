@@ -130,28 +130,33 @@ void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const Vi
     const Mesh& arrays = gathered ? *caller.mesh : mesh;
     const std::size_t count = arrays.positions.size();
     // A zero user normal means "compute this one" (docs/robustness.md); a
-    // gathered mesh's normals are used as they are (mesh_order.cpp computes
-    // normals into a copy instead).
-    const bool fill_in = !gathered && need_normals && !mesh.normals.empty() && has_zero_normal(mesh.normals);
-    if (!gathered && need_normals && (mesh.normals.empty() || fill_in)) {
+    // gathered mesh's normals, and a copy's made by mesh_order.cpp, are used
+    // as they are (it computed the zero ones).
+    const bool computes = !gathered && !caller.normals_final && need_normals;
+    const bool fill_in = computes && !mesh.normals.empty() && has_zero_normal(mesh.normals);
+    if (computes && (mesh.normals.empty() || fill_in)) {
         progress.begin_stage(0.0, 0.05, 1);
-        // The previous frame's normals when they were computed, not filled in,
-        // from the same positions and triangles (ComputedNormalsSource).
-        if (fill_in || !memory.normals_source.matches(mesh)) {
+        // The previous frame's normals when computed from the same positions
+        // and triangles (ComputedNormalsSource): the given normals play no
+        // part in them, so a mesh with zero normals reuses them too.
+        if (!memory.normals_source.matches(mesh)) {
             memory.normals_source.valid = false;  // until computed whole (a cancel stops it halfway)
             calculate_normals_into(mesh.positions, mesh.triangles, memory.normals_scratch, memory.normals,
                                    progress.poll_function());
-            if (fill_in) {
-                keep_given_normals(mesh.normals, memory.normals);
-            } else {
-                memory.normals_source.remember(mesh);
-            }
+            ++memory.normals_calculated;
+            memory.normals_source.remember(mesh);
+        }
+        if (fill_in) {
+            memory.filled_normals.assign(memory.normals.begin(), memory.normals.end());
+            keep_given_normals(mesh.normals, memory.filled_normals);
         }
     }
     assert(!gathered || !need_normals || arrays.normals.size() == count);
-    const std::vector<glm::vec3>* normals = !need_normals ? nullptr
-                                            : gathered || !(mesh.normals.empty() || fill_in) ? &arrays.normals
-                                                                                             : &memory.normals;
+    assert(!caller.normals_final || !need_normals || mesh.normals.size() == count);
+    const std::vector<glm::vec3>* normals = !need_normals        ? nullptr
+                                            : fill_in            ? &memory.filled_normals
+                                            : computes && mesh.normals.empty() ? &memory.normals
+                                                                 : &arrays.normals;
     resize_polling(out.screen, count, progress.poll_function());
     resize_polling(out.varyings, count, progress.poll_function());
     progress.begin_stage(0.05, 0.1, (count + kTransformBlock - 1) / kTransformBlock);

@@ -46,8 +46,15 @@ struct TransformedVertices {
 template <typename Real>
 struct VertexStageMemory {
     NormalsScratch normals_scratch;
-    std::vector<glm::vec3> normals;  ///< calculated when the mesh has none
+    /// Calculated from the mesh's positions and triangles alone, when it has
+    /// no normals or some zero ones (kept for the next frame while
+    /// normals_source matches).
+    std::vector<glm::vec3> normals;
     ComputedNormalsSource normals_source;  ///< the mesh `normals` were calculated from, while valid
+    /// The mesh's own normals with the zero ones taken from `normals`.
+    std::vector<glm::vec3> filled_normals;
+    /// Times `normals` were calculated (tests: once while the mesh is unchanged).
+    std::size_t normals_calculated = 0;
     std::vector<LightVectorsAt<Real>> block_vectors;  ///< one per block of vertices lit
 };
 
@@ -59,12 +66,17 @@ struct VertexStageMemory {
 struct CallerVertices {
     const Mesh* mesh = nullptr;             ///< null: the rendered mesh's own arrays
     const std::uint32_t* source = nullptr;  ///< per rendered vertex, the caller's
+    /// The rendered mesh's normals are final, zero ones too: mesh_order.cpp
+    /// computed every normal the caller's mesh would (a zero one is zero in
+    /// any order of triangles), so none is computed again here.
+    bool normals_final = false;
 };
 
 /// Transforms and projects every vertex; computes normals when the mesh has
-/// none and `need_normals` (an ambient-only scene never looks at one). With
-/// `caller` set, reads the caller's arrays instead (which then have normals
-/// to use as they are, or `need_normals` is false: mesh_order.cpp sees to it).
+/// none or some zero ones and `need_normals` (an ambient-only scene never
+/// looks at one), or reuses the previous frame's. With `caller.mesh` set,
+/// reads the caller's arrays instead (which then have normals to use as they
+/// are, or `need_normals` is false: mesh_order.cpp sees to it).
 /// Reports progress, and stops early when the render is cancelled.
 template <typename Real>
 void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const View& view, bool need_normals,

@@ -239,7 +239,7 @@ TEST_CASE("a corner list made for triangles since edited in place is made again"
 
 TEST_CASE("a cancel while the corner list is made leaves none taken for made") {
     AlwaysReorder always;
-    const Scene scene = scene_of(awkward_mesh(5).mesh);
+    Scene scene = scene_of(awkward_mesh(5).mesh);
     const RenderOptions options = normal_output();
     detail::MeshOrder order;
     detail::scene_in_render_order(scene, options, false, order);
@@ -252,9 +252,13 @@ TEST_CASE("a cancel while the corner list is made leaves none taken for made") {
     CHECK_THROWS_AS(detail::list_vertex_corners(scene.mesh, order, cancel_at_second_poll), RenderCancelled);
     CHECK(polls == 2);
     CHECK_FALSE(order.vertex_corners_made);
-    // The next frame, same mesh, same permutation, makes it whole and draws the caller's order's normals.
+    // The next frame of a moved vertex (the same mesh would reuse its
+    // normals, no list needed), same permutation, makes it whole and draws
+    // the caller's order's normals.
+    scene.mesh.positions[scene.mesh.triangles[0][0]] *= 1.25;
     const Scene& drawn = detail::scene_in_render_order(scene, options, false, order);
     CHECK(order.permutations_computed == 1);
+    CHECK(order.normals_computed == 2);
     CHECK(order.vertex_corners_made);
     CHECK(same_bits(drawn.mesh.normals, expected_normals(scene.mesh, order)));
 }
@@ -322,4 +326,73 @@ TEST_CASE("given normals with zeros (computed there) render the same bits reorde
             CHECK(same_bits(today.aovs.normal, reordered.aovs.normal));
         }
     }
+}
+
+TEST_CASE("a reordered copy's normals are computed once while the caller's positions and triangles are unchanged") {
+    AlwaysReorder always;
+    AwkwardMesh awkward = awkward_mesh(7);
+    Scene scene = scene_of(awkward.mesh);
+    const RenderOptions options = normal_output();
+    detail::MeshOrder order;
+    // Each frame: the copy's normals and positions as computed from scratch,
+    // and the times they were computed.
+    const auto frame = [&](const char* what) {
+        INFO(what);
+        const Mesh& copy = detail::scene_in_render_order(scene, options, false, order).mesh;
+        std::vector<glm::vec3> expected = expected_normals(scene.mesh, order);
+        const std::vector<std::uint32_t> target = detail::vertex_targets(order);
+        std::vector<glm::dvec3> positions(scene.mesh.positions.size());
+        std::vector<glm::vec3> colors(scene.mesh.colors.size());
+        for (std::size_t v = 0; v < positions.size(); ++v) {
+            positions[target[v]] = scene.mesh.positions[v];
+            if (!colors.empty()) colors[target[v]] = scene.mesh.colors[v];
+            if (!scene.mesh.normals.empty() && scene.mesh.normals[v] != glm::vec3(0.0f)) {
+                expected[target[v]] = scene.mesh.normals[v];
+            }
+        }
+        CHECK(same_bits(copy.normals, expected));
+        CHECK(same_bits(copy.positions, positions));
+        CHECK(same_bits(copy.colors, colors));
+        CHECK(order.vertex_arrays_copied);
+        CHECK(order.caller_vertices().normals_final);
+        return order.normals_computed;
+    };
+    CHECK(frame("first") == 1);
+    CHECK(frame("unchanged") == 1);
+    // Given normals, some zero: only their zeros are computed, from the kept ones.
+    std::vector<glm::vec3> given(scene.mesh.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
+    for (std::size_t v = 0; v < given.size(); v += 4) given[v] = glm::vec3(0.0f);
+    scene.mesh.normals = given;
+    CHECK(frame("given with zeros") == 1);
+    scene.mesh.normals.clear();
+    CHECK(frame("none given again: not the last frame's") == 1);
+    // Colours play no part: gathered, normals kept.
+    scene.mesh.colors.assign(scene.mesh.positions.size(), glm::vec3(0.25f, 0.5f, 0.75f));
+    CHECK(frame("colours given") == 1);
+    // The caller's positions or triangles changed: computed again.
+    scene.mesh.positions[awkward.sheet] += glm::dvec3(0.0, 0.0, 0.01);
+    CHECK(frame("a vertex moved") == 2);
+    std::swap(scene.mesh.triangles[321][0], scene.mesh.triangles[321][1]);
+    CHECK(frame("a triangle rewound") == 3);
+    CHECK(frame("unchanged") == 3);
+    // A frame that needs no normals drops the copy's vertex arrays: the next one computes them.
+    const std::vector<PointLight> lights = scene.lights;
+    scene.lights.clear();
+    REQUIRE(detail::scene_in_render_order(scene, RenderOptions::exact(), false, order).mesh.positions.empty());
+    scene.lights = lights;
+    CHECK(frame("after a frame without normals") == 4);
+    // A new permutation computes them again, for the same mesh.
+    order.forget_mesh();
+    CHECK(frame("new permutation") == 5);
+    CHECK(order.permutations_computed == 2);
+    // A cancel while they are computed leaves none kept.
+    scene.mesh.positions[awkward.point] *= 0.5;
+    const std::size_t before = order.normals_computed;
+    const std::function<void()> cancel_while_computed = [&order] {
+        if (!order.kept_normals.source.valid && order.triangles_copied) throw RenderCancelled();
+    };
+    CHECK_THROWS_AS(detail::scene_in_render_order(scene, options, false, order, cancel_while_computed),
+                    RenderCancelled);
+    CHECK_FALSE(order.kept_normals.source.valid);
+    CHECK(frame("after a cancel") == before + 1);
 }
