@@ -7,7 +7,7 @@
 // compiler vectorises, so each lane's result is shade_terms' bit for bit
 // (the library builds with -ffp-contract=off: no lane fuses what the scalar
 // code rounds twice). Only std::pow stays per lane, and is called only where
-// the scalar code calls it.
+// the scalar code calls it and its result is not known to be +0.
 #ifndef PHONGRAST_SRC_SHADE_LANES_HPP
 #define PHONGRAST_SRC_SHADE_LANES_HPP
 
@@ -123,13 +123,16 @@ void shade_terms_lanes(const LightRig<Real>& rig, const ShadeLanesInput<Real, N>
                     r_dot_v[l] = at_least_zero < Real(1) ? at_least_zero : Real(1);  // std::min(1, .)
                 }
                 const Real intensity_ks[3] = {intensity[0] * ks[0], intensity[1] * ks[1], intensity[2] * ks[2]};
-                // The power only where the scalar code takes it, found without a
+                // The power only where the scalar code takes it and it can differ from the
+                // highlight's +0: for n > 0, 0^n is +0, and R.V is clamped to 0 on about half a
+                // lit surface (0^0 is 1: every lit lane then). The lanes are found without a
                 // branch per lane first: lit lanes come and go at random, and a branch on each mispredicts often.
+                const Real zero_power_below = exponent > Real(0) ? Real(0) : Real(-1);
                 std::size_t lit_lanes[N];
                 std::size_t lit_count = 0;
                 for (std::size_t l = 0; l < N; ++l) {
                     lit_lanes[lit_count] = l;
-                    lit_count += lit[l] != Real(0) ? 1 : 0;
+                    lit_count += lit[l] != Real(0) && r_dot_v[l] > zero_power_below ? 1 : 0;
                 }
                 Real highlight[N];
                 for (std::size_t l = 0; l < N; ++l) highlight[l] = Real(0);
