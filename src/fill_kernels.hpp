@@ -598,7 +598,8 @@ void fill_flat_textured(const FillTriangle<Real>& draw, FillTarget<Real>& target
         Lanes<Real> texel[3];
         filtered_texel_lanes(draw, n, w, s, t, texture, texel);
         for (int c = 0; c < 3; ++c) {
-            for (int l = 0; l < n; ++l) out[c][l] = texel[c][l] * draw.lit[0][c] + draw.lit[1][c];
+            const Real colour_part = draw.lit[0][c], specular_part = draw.lit[1][c];  // locals: see fill_phong_lanes.hpp
+            for (int l = 0; l < n; ++l) out[c][l] = texel[c][l] * colour_part + specular_part;
         }
     });
 }

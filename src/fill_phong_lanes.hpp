@@ -408,7 +408,10 @@ PHONGRAST_FILL_INLINE void shade_ambient_lanes(const FillTriangle<Real>& draw, i
                                                Lanes<Real>* color, Lanes<Real>* out) {
     const auto interpolate_color = [&](int c) {
         if (UniformColor) {
-            for (int l = 0; l < n; ++l) color[c][l] = constants.color[c];
+            // Each broadcast from a local: read through a reference, GCC reloaded it
+            // for every lane in a scalar loop (it could not rule out that the stores alias it).
+            const Real uniform = constants.color[c];
+            for (int l = 0; l < n; ++l) color[c][l] = uniform;
         } else {
             interpolate_lanes(n, w, draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], color[c]);
         }
@@ -438,7 +441,8 @@ template <typename Real>
 PHONGRAST_FILL_INLINE void eye_lanes(int n, bool eye_at_infinity, const Lanes<Real>* point, Lanes<Real>* eye) {
     if (eye_at_infinity) {
         for (int c = 0; c < 3; ++c) {
-            for (int l = 0; l < n; ++l) eye[c][l] = kEyeAtInfinity<Real>[c];  // orthographic: V = -f
+            const Real axis = kEyeAtInfinity<Real>[c];
+            for (int l = 0; l < n; ++l) eye[c][l] = axis;  // orthographic: V = -f
         }
         return;
     }
@@ -466,7 +470,8 @@ PHONGRAST_FILL_INLINE void surface_lanes(const FillTriangle<Real>& draw, int n, 
         if (terms.specular()) eye_lanes(n, eye_at_infinity, point, eye);
     } else if (terms.specular()) {
         for (int c = 0; c < 3; ++c) {
-            for (int l = 0; l < n; ++l) eye[c][l] = vectors.to_eye[c];
+            const Real to_eye = vectors.to_eye[c];
+            for (int l = 0; l < n; ++l) eye[c][l] = to_eye;
         }
     }
 }
@@ -507,7 +512,8 @@ PHONGRAST_FILL_INLINE void add_light_lanes(int n, std::size_t k, const Terms& te
             const Real light = lights[k].position[c];
             for (int l = 0; l < n; ++l) to_light[c][l] = light - point[c][l];
         } else {
-            for (int l = 0; l < n; ++l) to_light[c][l] = vectors.to_light[k][c];
+            const Real light = vectors.to_light[k][c];
+            for (int l = 0; l < n; ++l) to_light[c][l] = light;
         }
     }
     if (PerSampleVectors) normalize_lanes(n, to_light[0], to_light[1], to_light[2]);
