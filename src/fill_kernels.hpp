@@ -688,7 +688,8 @@ void fill_phong_unlit(const FillTriangle<Real>& draw, FillTarget<Real>& target, 
         for (int c = 0; c < 3; ++c) {
             if constexpr (Ambient) {
                 if constexpr (UniformColor) {
-                    for (int l = 0; l < n; ++l) out[c][l] = Real(0) + factor[c] * constants.color[c];
+                    const Real uniform = constants.color[c];  // a local: see shade_ambient_lanes()
+                    for (int l = 0; l < n; ++l) out[c][l] = Real(0) + factor[c] * uniform;
                 } else {
                     interpolate_lanes(n, w, draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], out[c]);
                     for (int l = 0; l < n; ++l) out[c][l] = Real(0) + factor[c] * out[c][l];
