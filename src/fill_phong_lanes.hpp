@@ -653,11 +653,14 @@ PHONGRAST_FILL_INLINE void shade_pending_phong(PendingPhongSamples<Real>& pendin
     const Terms terms;
     const FillConstants<Real>& constants = *pending.constants;
     const LightRig<Real>& rig = constants.rig[pending.surface];
-    for (int l = pending.count; l < n; ++l) {
-        for (int c = 0; c < 3; ++c) {
-            pending.color[c][l] = pending.color[c][0];
-            pending.normal[c][l] = pending.normal[c][0];
-            pending.point[c][l] = pending.point[c][0];
+    for (int c = 0; c < 3; ++c) {
+        // The first sample's values from locals: read from the arrays being
+        // written, they were reloaded lane by lane in scalar loops.
+        const Real color = pending.color[c][0], normal = pending.normal[c][0], point = pending.point[c][0];
+        for (int l = pending.count; l < n; ++l) {
+            pending.color[c][l] = color;
+            pending.normal[c][l] = normal;
+            pending.point[c][l] = point;
         }
     }
     Lanes<Real> color[3];
