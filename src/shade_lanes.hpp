@@ -70,14 +70,14 @@ void light_vectors_lanes(const PointShader<Real>& shader, const PointOf& point_o
 template <typename Real, std::size_t N, bool Ambient, bool Diffuse, bool Specular>
 void shade_terms_lanes(const LightRig<Real>& rig, const ShadeLanesInput<Real, N>& in, AxisLanes<Real, N>& out) {
     // shade_terms' `Vec3 result(0)` and its `+=`: starting from zero and adding
-    // keeps the sign of a zero sum as the scalar code does.
+    // keeps the sign of a zero sum as the scalar code does. One loop with the
+    // ambient term: an array zeroed alone became `rep stosq`, slow to start.
     for (int c = 0; c < 3; ++c) {
-        for (std::size_t l = 0; l < N; ++l) out.axis[c][l] = Real(0);
-    }
-    if constexpr (Ambient) {
-        for (int c = 0; c < 3; ++c) {
+        if constexpr (Ambient) {
             const Real factor = rig.ambient_factor[c];
-            for (std::size_t l = 0; l < N; ++l) out.axis[c][l] += factor * in.color.axis[c][l];
+            for (std::size_t l = 0; l < N; ++l) out.axis[c][l] = Real(0) + factor * in.color.axis[c][l];
+        } else {
+            for (std::size_t l = 0; l < N; ++l) out.axis[c][l] = Real(0);
         }
     }
     if constexpr (Diffuse || Specular) {
@@ -95,7 +95,7 @@ void shade_terms_lanes(const LightRig<Real>& rig, const ShadeLanesInput<Real, N>
             const Vec3<Real>& intensity = rig.active_lights[k].intensity;
             const Real intensity_kd[3] = {intensity[0] * kd[0], intensity[1] * kd[1], intensity[2] * kd[2]};
             Real n_dot_l[N], r_dot_v[N];
-            Real facing[N], lit[N];  // 1 where N.L passes the grazing threshold / the specular term is added, else 0
+            Real facing[N];  // 1 where N.L passes the grazing threshold, else 0
             const Real(&eye)[3][N] = Specular ? in.to_eye->axis : in.normal.axis;  // unread without specular
             for (std::size_t l = 0; l < N; ++l) {
                 // glm::dot: (x + y) + z.
@@ -110,39 +110,39 @@ void shade_terms_lanes(const LightRig<Real>& rig, const ShadeLanesInput<Real, N>
                     sum[2][l] += lights ? intensity_kd[2] * local_color[2][l] * n_dot_l[l] : Real(0);
                 }
             }
-            if constexpr (Specular) {  // specular_from_direction(), up to the power
+            if constexpr (Specular) {  // specular_from_direction()
+                // The term is added only where it can differ from zero: where the scalar code
+                // takes the power (N.L beyond the threshold, V not zero) and, for n > 0, R.V > 0
+                // (0^n is +0: R.V is clamped to 0 on about half a lit surface; 0^0 is 1). Adding
+                // a zero elsewhere changes no bit: the sums start at +0 (0 + ambient) and a sum
+                // that starts at +0 is never -0, and x + (+-0) is x for every other x.
+                const Real zero_power_below = exponent > Real(0) ? Real(0) : Real(-1);
+                int takes_power[N];  // 0 or 1, set without a branch (a branch per lane mispredicts often)
                 for (std::size_t l = 0; l < N; ++l) {
                     const Real eye_length2 = (eye[0][l] * eye[0][l] + eye[1][l] * eye[1][l]) + eye[2][l] * eye[2][l];
-                    const Real eye_ok = eye_length2 != Real(0) ? Real(1) : Real(0);
-                    lit[l] = facing[l] != Real(0) ? eye_ok : Real(0);
                     const Real rx = Real(2) * n[0][l] * n_dot_l[l] - to_light[0][l];
                     const Real ry = Real(2) * n[1][l] * n_dot_l[l] - to_light[1][l];
                     const Real rz = Real(2) * n[2][l] * n_dot_l[l] - to_light[2][l];
                     const Real d = (rx * eye[0][l] + ry * eye[1][l]) + rz * eye[2][l];
                     const Real at_least_zero = Real(0) < d ? d : Real(0);             // std::max(0, d)
                     r_dot_v[l] = at_least_zero < Real(1) ? at_least_zero : Real(1);  // std::min(1, .)
+                    takes_power[l] = int(facing[l] != Real(0)) & int(eye_length2 != Real(0)) &
+                                     int(r_dot_v[l] > zero_power_below);
                 }
                 const Real intensity_ks[3] = {intensity[0] * ks[0], intensity[1] * ks[1], intensity[2] * ks[2]};
-                // The power only where the scalar code takes it and it can differ from the
-                // highlight's +0: for n > 0, 0^n is +0, and R.V is clamped to 0 on about half a
-                // lit surface (0^0 is 1: every lit lane then). The lanes are found without a
-                // branch per lane first: lit lanes come and go at random, and a branch on each mispredicts often.
-                const Real zero_power_below = exponent > Real(0) ? Real(0) : Real(-1);
-                std::size_t lit_lanes[N];
-                std::size_t lit_count = 0;
+                // Those lanes listed first, then powered and added one by one: they come and go at random.
+                std::size_t power_lanes[N];
+                std::size_t power_count = 0;
                 for (std::size_t l = 0; l < N; ++l) {
-                    lit_lanes[lit_count] = l;
-                    lit_count += lit[l] != Real(0) && r_dot_v[l] > zero_power_below ? 1 : 0;
+                    power_lanes[power_count] = l;
+                    power_count += static_cast<std::size_t>(takes_power[l]);
                 }
-                Real highlight[N];
-                for (std::size_t l = 0; l < N; ++l) highlight[l] = Real(0);
-                for (std::size_t i = 0; i < lit_count; ++i) {
-                    highlight[lit_lanes[i]] = std::pow(r_dot_v[lit_lanes[i]], exponent);
-                }
-                for (std::size_t l = 0; l < N; ++l) {
-                    sum[0][l] += lit[l] != Real(0) ? intensity_ks[0] * highlight[l] : Real(0);
-                    sum[1][l] += lit[l] != Real(0) ? intensity_ks[1] * highlight[l] : Real(0);
-                    sum[2][l] += lit[l] != Real(0) ? intensity_ks[2] * highlight[l] : Real(0);
+                for (std::size_t i = 0; i < power_count; ++i) {
+                    const std::size_t l = power_lanes[i];
+                    const Real highlight = std::pow(r_dot_v[l], exponent);
+                    sum[0][l] += intensity_ks[0] * highlight;
+                    sum[1][l] += intensity_ks[1] * highlight;
+                    sum[2][l] += intensity_ks[2] * highlight;
                 }
             }
         }
