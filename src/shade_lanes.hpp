@@ -114,8 +114,9 @@ void shade_terms_lanes(const LightRig<Real>& rig, const ShadeLanesInput<Real, N>
                 // The term is added only where it can differ from zero: where the scalar code
                 // takes the power (N.L beyond the threshold, V not zero) and, for n > 0, R.V > 0
                 // (0^n is +0: R.V is clamped to 0 on about half a lit surface; 0^0 is 1). Adding
-                // a zero elsewhere changes no bit: the sums start at +0 (0 + ambient) and a sum
-                // that starts at +0 is never -0, and x + (+-0) is x for every other x.
+                // the zero elsewhere changes no bit: the sums start at +0 (0 + ambient) and a sum
+                // that starts at +0 is never -0, and x + (+-0) is x for every other x. (The term
+                // skipped is Ip ks x 0, an exact zero: validation bounds Ip ks by kMaxLitValue.)
                 const Real zero_power_below = exponent > Real(0) ? Real(0) : Real(-1);
                 int takes_power[N];  // 0 or 1, set without a branch (a branch per lane mispredicts often)
                 for (std::size_t l = 0; l < N; ++l) {
