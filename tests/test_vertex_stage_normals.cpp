@@ -24,6 +24,7 @@ Scene sphere_with_loose_vertex() {
     Scene scene;
     scene.mesh = test_meshes::icosphere(12, 0.08);
     scene.mesh.positions.push_back({4.0, 4.0, 4.0});  // unreferenced: its computed normal is zero
+    if (!scene.mesh.colors.empty()) scene.mesh.colors.push_back(glm::vec3(0.5f));  // a valid mesh: one colour per vertex
     scene.camera.eye = {0.3, 0.4, 3.2};
     scene.image.rows = scene.image.columns = 32;
     return scene;
