@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include "resize_polling.hpp"
+#include "same_array.hpp"
 #include "effects.hpp"
 
 namespace phongrast::detail {
@@ -166,17 +167,19 @@ void copy_vertex_arrays_and_normals(const Mesh& mesh, MeshOrder& order, const st
     // Positions equal to those kept, gathered through the same permutation,
     // are the copy's already; the colours play no part in the normals.
     gather(mesh.colors, order.vertex_source, out.colors, poll);
-    if (!(kept.permutation == order.permutations_computed && kept.source.matches(mesh))) {
-        kept.source.valid = false;  // until computed whole (a cancel may stop it halfway)
+    if (!(kept.valid && kept.triangles_made == order.triangles_made && same_array(kept.positions, mesh.positions))) {
+        kept.valid = false;  // until computed whole (a cancel may stop it halfway)
         gather(mesh.positions, order.vertex_source, out.positions, poll);
         normals_in_caller_order(mesh, order, poll);
         ++order.normals_computed;
-        kept.source.remember(mesh);
-        kept.permutation = order.permutations_computed;
-        if (kept.source.valid) {
+        if (mesh.triangles.size() <= kReusedNormalsMaxTriangles) {
+            kept.positions.assign(mesh.positions.begin(), mesh.positions.end());
             kept.normals.assign(out.normals.begin(), out.normals.end());
-        } else {
-            std::vector<glm::vec3>().swap(kept.normals);  // too large to keep
+            kept.triangles_made = order.triangles_made;
+            kept.valid = true;
+        } else {  // too large to keep
+            std::vector<glm::dvec3>().swap(kept.positions);
+            std::vector<glm::vec3>().swap(kept.normals);
         }
     } else {
         // The copy's normals may hold the last frame's given ones.
@@ -374,7 +377,7 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
     const bool computes_normals = needed && (mesh.normals.empty() || has_zero_normal(mesh.normals));
     order.vertex_arrays_copied = computes_normals;
     if (!computes_normals) {
-        order.kept_normals.source.valid = false;  // they go with the positions they were computed from
+        order.kept_normals.valid = false;  // they go with the copy's positions, dropped here
         std::vector<glm::dvec3>().swap(out.positions);
         std::vector<glm::vec3>().swap(out.colors);
         std::vector<glm::vec3>().swap(out.normals);

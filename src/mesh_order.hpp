@@ -128,16 +128,18 @@ struct MeshOrder {
     /// too large for vertex_corners (kVertexCornersMaxTriangles).
     std::vector<glm::vec3> normals;
     /// The copy's computed normals (before given ones replace them), kept for
-    /// the next frame while the caller's positions and triangles compare equal
-    /// to those they were computed from, under the same permutation: a
-    /// Renderer's frames of a mesh without normals (or with zero ones) compute
-    /// them once, and gather its positions once. Meshes of at most
-    /// kReusedNormalsMaxTriangles triangles (24 + 12 bytes per vertex, 12 per
-    /// triangle).
+    /// the next frame while the caller's positions compare equal to those they
+    /// were computed from and the copy's triangles are the same ones
+    /// (triangles_made: they are made again after any edit of the caller's,
+    /// or a new permutation, and compared every frame already): a Renderer's
+    /// frames of a mesh without normals (or with zero ones) compute them once,
+    /// and gather its positions once. Meshes of at most
+    /// kReusedNormalsMaxTriangles triangles (24 + 12 bytes per vertex).
     struct KeptNormals {
-        ComputedNormalsSource source;
-        std::size_t permutation = 0;  ///< permutations_computed when computed
+        std::vector<glm::dvec3> positions;  ///< the caller's, as computed from
+        std::size_t triangles_made = 0;     ///< MeshOrder::triangles_made then
         std::vector<glm::vec3> normals;
+        bool valid = false;
     } kept_normals;
     /// Times the copy's normals were computed (tests: once while the mesh is unchanged).
     std::size_t normals_computed = 0;

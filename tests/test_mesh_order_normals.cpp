@@ -389,10 +389,10 @@ TEST_CASE("a reordered copy's normals are computed once while the caller's posit
     scene.mesh.positions[awkward.point] *= 0.5;
     const std::size_t before = order.normals_computed;
     const std::function<void()> cancel_while_computed = [&order] {
-        if (!order.kept_normals.source.valid && order.triangles_copied) throw RenderCancelled();
+        if (!order.kept_normals.valid && order.triangles_copied) throw RenderCancelled();
     };
     CHECK_THROWS_AS(detail::scene_in_render_order(scene, options, false, order, cancel_while_computed),
                     RenderCancelled);
-    CHECK_FALSE(order.kept_normals.source.valid);
+    CHECK_FALSE(order.kept_normals.valid);
     CHECK(frame("after a cancel") == before + 1);
 }
