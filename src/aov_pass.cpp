@@ -29,6 +29,28 @@ glm::vec3 world_from_camera(const CameraFrame& frame, const Vec3<Real>& camera_n
 // sample's final depth identifies the triangle the fill let through: the
 // last one (in painter's order) whose depth equals it, since the fill's test
 // lets an equal depth overwrite.
+/// Whether a plane, or the depth buffer's test of which triangle painted a
+/// sample, needs the fill's weights there. Coverage and the id alone do not.
+bool needs_weights(const AovRequest& planes, const void* depth_buffer) {
+    return depth_buffer != nullptr || planes.depth || planes.distance || planes.uv || planes.normal;
+}
+
+// write_triangle() when no plane needs the weights (needs_weights(); the
+// thumbnail's alpha asks only for coverage): each span's samples are set,
+// no weight computed.
+template <typename Real>
+void write_covered(const AovPassInput<Real>& in, const AovRequest& planes, const FillTriangle<Real>& draw,
+                   std::uint32_t source, int row_begin, int row_end, AovSamples& out) {
+    const std::size_t columns = static_cast<std::size_t>(out.columns);
+    const std::int32_t id = static_cast<std::int32_t>(in.original_triangle ? in.original_triangle[source] : source);
+    for_each_covered_span(draw.coverage, row_begin, row_end,
+                          [&](int row, int first_column, int count, const std::int64_t*, const std::int64_t*) {
+        const std::size_t start = static_cast<std::size_t>(row) * columns + static_cast<std::size_t>(first_column);
+        std::fill_n(out.covered.begin() + static_cast<std::ptrdiff_t>(start), count, std::uint8_t{1});
+        if (planes.id) std::fill_n(out.id.begin() + static_cast<std::ptrdiff_t>(start), count, id);
+    });
+}
+
 template <typename Real, bool Perspective>
 void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, const FillTriangle<Real>& draw,
                     std::uint32_t source, int row_begin, int row_end, AovSamples& out) {
@@ -118,6 +140,7 @@ template <typename Real>
 void run_aov_pass(const AovPassInput<Real>& in, const AovRequest& planes, AovSamples& out,
                   ProgressMonitor& progress) {
     const Bins<Real>& bins = *in.bins;
+    const bool weighted = needs_weights(planes, in.depth_buffer);
     progress.begin_stage(0.9, 1.0, static_cast<std::size_t>(bins.bands));
     tbb::parallel_for(0, bins.bands, [&](int band) {
         if (progress.cancelled()) return;
@@ -126,7 +149,9 @@ void run_aov_pass(const AovPassInput<Real>& in, const AovRequest& planes, AovSam
         const FillTriangle<Real>* const* draws = bins.band_draws(band);
         for (std::uint32_t i = 0; i < bins.band_size(band); ++i) {
             const FillTriangle<Real>& draw = *draws[i];
-            if (in.perspective) {
+            if (!weighted) {
+                write_covered(in, planes, draw, draw.source, row_begin, row_end, out);
+            } else if (in.perspective) {
                 write_triangle<Real, true>(in, planes, draw, draw.source, row_begin, row_end, out);
             } else {
                 write_triangle<Real, false>(in, planes, draw, draw.source, row_begin, row_end, out);

@@ -3,6 +3,7 @@
 // rectangles), and the colour image unchanged by asking for them.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -186,6 +187,42 @@ TEST_CASE("alpha is 0 off the mesh, 1 inside and the exact covered fraction on a
         CHECK(result.aovs.alpha[10 * 20 + 12] == 1.0f);
         CHECK(result.aovs.alpha[10 * 20 + 5] == 0.0f);
         CHECK(result.aovs.alpha[1 * 20 + 12] == 0.0f);
+    }
+}
+
+TEST_CASE("coverage and ids alone (no plane needing the weights) equal those of every plane asked together") {
+    // Alpha and id without depth, normal, uv or distance take a path that sets
+    // each span's samples without the fill's weights (the thumbnail's alpha);
+    // with every plane, each sample's weights are computed. Both must agree.
+    Scene scene = base_scene(48);
+    scene.mesh = test_meshes::torus(32, 16, 1.2, 0.45);
+    scene.camera.eye = {0.5, 2.5, 4.0};
+    const AovRequest alone[] = {{false, false, false, true}, {false, false, true, false}, {false, false, true, true}};
+    for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+        for (RenderOptions options : {RenderOptions::exact(), RenderOptions::seed()}) {
+            for (Visibility visibility : {Visibility::painter, Visibility::depth_buffer}) {
+                for (int samples : {1, 2}) {
+                    scene.shader = shader;
+                    options.visibility = visibility;
+                    options.samples_per_axis = samples;
+                    const RenderResult every = render(scene, with_aovs(options));
+                    REQUIRE(std::count(every.aovs.alpha.begin(), every.aovs.alpha.end(), 0.0f) > 0);
+                    REQUIRE(std::count(every.aovs.alpha.begin(), every.aovs.alpha.end(), 1.0f) > 0);
+                    for (const AovRequest& planes : alone) {
+                        INFO(to_string(shader) << (visibility == Visibility::painter ? ", painter" : ", depth buffer")
+                                               << ", " << samples << "^2 samples, planes " << to_string(planes));
+                        const RenderResult some = render(scene, with_aovs(options, planes));
+                        CHECK(some.image.pixels == every.image.pixels);
+                        CHECK(some.aovs.alpha.size() == (planes.alpha ? every.aovs.alpha.size() : 0));
+                        if (planes.alpha) CHECK(some.aovs.alpha == every.aovs.alpha);
+                        CHECK(some.aovs.id.size() == (planes.id ? every.aovs.id.size() : 0));
+                        if (planes.id) CHECK(some.aovs.id == every.aovs.id);
+                        CHECK(some.aovs.depth.empty());
+                        CHECK(some.aovs.normal.empty());
+                    }
+                }
+            }
+        }
     }
 }
 

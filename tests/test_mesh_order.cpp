@@ -216,6 +216,32 @@ TEST_CASE("a reordered mesh renders the same bits in every shader, mode and extr
     }
 }
 
+TEST_CASE("a reordered mesh's ids and alpha alone (no weights computed) name the caller's triangles") {
+    AovRequest id_and_alpha;
+    id_and_alpha.id = id_and_alpha.alpha = true;
+    for (const Case& c : cases()) {
+        for (int threads : {1, 2}) {
+            Scene scene = sphere_scene(c.mesh, c.eye);
+            RenderOptions options;
+            options.aovs = id_and_alpha;
+            options.threads = threads;
+            RenderResult today, reordered;
+            {
+                ReorderThreshold never(kNever);
+                today = render(scene, options);
+            }
+            {
+                ReorderThreshold always(0);
+                reordered = render(scene, options);
+            }
+            INFO(c.name << ", " << threads << " thread(s)");
+            REQUIRE(today.stats.triangles_drawn > 0);
+            REQUIRE(today.aovs.id.size() == today.aovs.alpha.size());
+            CHECK(same_aovs(today.aovs, reordered.aovs));
+        }
+    }
+}
+
 TEST_CASE("a copy holding only triangles (the caller's vertex arrays read through the permutation) renders the same bits") {
     // Normals given, or not needed (ambient only, no normal output): nothing
     // is computed from the copy's positions, so the copy keeps no vertex
