@@ -12,6 +12,9 @@ namespace phongrast_bench {
 namespace {
 
 /// `mesh` with triangle k = old triangle triangle_source[k] and vertex v moved to vertex_target[v].
+/// A triangle's own attributes (its corners' texture coordinates and file normals, its material)
+/// go with it: left in place, a textured mesh's corners would take other faces' texture
+/// coordinates, and assembly would split its vertices into another, larger mesh.
 phongrast::Mesh permuted(const phongrast::Mesh& mesh, const std::vector<std::uint32_t>& triangle_source,
                          const std::vector<std::uint32_t>& vertex_target) {
     phongrast::Mesh out = mesh;
@@ -21,8 +24,12 @@ phongrast::Mesh permuted(const phongrast::Mesh& mesh, const std::vector<std::uin
         if (!mesh.normals.empty()) out.normals[vertex_target[v]] = mesh.normals[v];
     }
     for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
-        const phongrast::Triangle& tri = mesh.triangles[triangle_source[k]];
+        const std::uint32_t source = triangle_source[k];
+        const phongrast::Triangle& tri = mesh.triangles[source];
         out.triangles[k] = {vertex_target[tri[0]], vertex_target[tri[1]], vertex_target[tri[2]]};
+        if (!mesh.texcoord_triangles.empty()) out.texcoord_triangles[k] = mesh.texcoord_triangles[source];
+        if (!mesh.file_normal_triangles.empty()) out.file_normal_triangles[k] = mesh.file_normal_triangles[source];
+        if (!mesh.face_materials.empty()) out.face_materials[k] = mesh.face_materials[source];
     }
     return out;
 }

@@ -18,8 +18,10 @@ namespace phongrast_bench {
 /// "generator", "spatial", "shuffled".
 const std::vector<std::string>& mesh_order_names();
 
-/// `mesh` (positions, colours, normals, triangles) put into the order called
-/// `order`; throws std::invalid_argument naming the orders for another name.
+/// `mesh` put into the order called `order`: its vertices (positions, colours,
+/// normals) and triangles, each triangle with its own attributes (texture
+/// coordinate and file normal indices, material); throws
+/// std::invalid_argument naming the orders for another name.
 phongrast::Mesh in_mesh_order(const phongrast::Mesh& mesh, const std::string& order);
 
 }  // namespace phongrast_bench
