@@ -147,6 +147,7 @@ void run_orders(const Settings& s) {
         if (s.renderer_only) continue;
         contenders.push_back({order + ", Renderer, not reordered", scene, false, false});
         contenders.push_back({order + ", render()", scene, true, true});
+        contenders.push_back({order + ", render(), not reordered", scene, false, true});
     }
     const std::vector<double> ms = time_contenders(contenders, options_for(s), s.repeat, s.dump);
     const double spatial = ms[spatial_index];
@@ -163,7 +164,7 @@ void run_orders(const Settings& s) {
 /// Renderer and for one-off render() calls, in the generator's order and shuffled.
 void run_sweep(const Settings& s) {
     std::printf("\n| triangles | order | off ms | Renderer on / off | render() on / off |\n|---:|---|---:|---:|---:|\n");
-    for (int frequency : {16, 32, 57, 80, 128}) {
+    for (int frequency : {16, 32, 57, 80, 128, 181, 256}) {
         support::NamedScene named = support::icosphere_scene("sweep", frequency, 512);
         named.scene.shader = phongrast::parse_shader(s.shader);
         if (s.computed_normals) named.scene.mesh.normals.clear();

@@ -45,9 +45,12 @@ namespace phongrast::detail {
 /// Meshes with fewer triangles are rendered in the caller's order: their
 /// vertex arrays stay in cache, and the copy would cost more than it saves.
 /// A Renderer pays the permutation once per mesh, render() on every call,
-/// so render() starts higher (measured: docs/performance.md, "Mesh order").
+/// so render() starts much higher: under 2^18 triangles, a one-off render
+/// that reordered lost on every mesh measured (the bunny 1.3-1.6x, the
+/// armadillo 1.15x, shuffled icospheres of 65k-128k up to 1.07x; above it
+/// shuffled meshes gain, Gouraud 0.70-0.90; docs/performance.md, "Mesh order").
 constexpr std::size_t kReorderMinTriangles = 16384;
-constexpr std::size_t kReorderMinTrianglesOneOff = 65536;
+constexpr std::size_t kReorderMinTrianglesOneOff = 262144;
 
 /// A mesh whose order already misses the cache less than this, in vertex
 /// cache lines per triangle (local_order_misses()), is rendered as it
