@@ -222,7 +222,7 @@ int main(int argc, char** argv) {
                    "write each contender's last image's raw float RGB pixels to this prefix + its label + .rgb");
     app.add_flag("--cpu-time", s.cpu_time,
                  "time each render by the process's CPU time (less disturbed by other work on a loaded machine)");
-    app.add_flag("--sweep", s.sweep, "icospheres of 5k-330k triangles: where reordering starts to pay");
+    app.add_flag("--sweep", s.sweep, "icospheres of 5k-1.3M triangles: where reordering starts to pay");
     app.add_option("--walk", s.walk, "the fill in mesh order: auto (the render's choice), always or never")
         ->check(CLI::IsMember({"auto", "always", "never"}));
     CLI11_PARSE(app, argc, argv);
