@@ -8,6 +8,8 @@
 
 // The baseline kernels' span_weights: the same operations as the fill.
 #include "fill_kernels.hpp"
+// VisibleLayer: the colour fill's owner buffers.
+#include "fill_driver.hpp"
 #include "phongrast/lighting.hpp"
 
 namespace phongrast::detail {
@@ -49,6 +51,25 @@ void write_covered(const AovPassInput<Real>& in, const AovRequest& planes, const
         std::fill_n(out.covered.begin() + static_cast<std::ptrdiff_t>(start), count, std::uint8_t{1});
         if (planes.id) std::fill_n(out.id.begin() + static_cast<std::ptrdiff_t>(start), count, id);
     });
+}
+
+// write_covered() for a whole band from the colour fill's owner buffer: a
+// sample is covered where some triangle owns it, and its id is the owner's
+// (the last triangle in painter's order to cover it, as the pass finds).
+template <typename Real>
+void write_owned(const AovPassInput<Real>& in, const AovRequest& planes, const FillTriangle<Real>* const* draws,
+                 const VisibleLayer& layer, int row_begin, int row_end, AovSamples& out) {
+    const std::size_t first = static_cast<std::size_t>(row_begin) * static_cast<std::size_t>(out.columns);
+    const std::size_t count = static_cast<std::size_t>(row_end - row_begin) * static_cast<std::size_t>(out.columns);
+    const std::uint32_t* owner = layer.owner.data();
+    for (std::size_t s = 0; s < count; ++s) {
+        if (owner[s] == kNoOwner) continue;
+        out.covered[first + s] = 1;
+        if (planes.id) {
+            const std::uint32_t source = draws[owner[s]]->source;
+            out.id[first + s] = static_cast<std::int32_t>(in.original_triangle ? in.original_triangle[source] : source);
+        }
+    }
 }
 
 template <typename Real, bool Perspective>
@@ -147,6 +168,11 @@ void run_aov_pass(const AovPassInput<Real>& in, const AovRequest& planes, AovSam
         const int row_begin = band * kBandRows;
         const int row_end = std::min(out.rows, row_begin + kBandRows);
         const FillTriangle<Real>* const* draws = bins.band_draws(band);
+        if (!weighted && in.band_layers != nullptr) {
+            write_owned(in, planes, draws, in.band_layers[band], row_begin, row_end, out);
+            progress.piece_done();
+            return;
+        }
         for (std::uint32_t i = 0; i < bins.band_size(band); ++i) {
             const FillTriangle<Real>& draw = *draws[i];
             if (!weighted) {

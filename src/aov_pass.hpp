@@ -22,6 +22,8 @@
 
 namespace phongrast::detail {
 
+struct VisibleLayer;
+
 /// The extra outputs of one render pass at its own resolution (the
 /// supersampled image, or one rotated-grid pass): one entry per sample.
 struct AovSamples {
@@ -56,6 +58,10 @@ struct AovPassInput {
     /// The caller's index of each triangle of a reordered mesh (mesh_order.hpp), which the id output
     /// gives; null when the mesh is rendered in the caller's order.
     const std::uint32_t* original_triangle = nullptr;
+    /// The colour fill's owner buffers, one per band (fill_driver.hpp), when it
+    /// shaded only the visible samples: each sample's last triangle is there
+    /// already, so coverage and ids alone are read from them, not found again.
+    const VisibleLayer* band_layers = nullptr;
 };
 
 /// Fills `out` (already reset) for every band, in parallel over bands.

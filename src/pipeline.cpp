@@ -200,7 +200,8 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                            perspective_weights(scene, options),
                                            fill_plan.depth_test ? memory.fill.depth_buffer.data() : nullptr,
                                            &scene.mesh.triangles, &memory.vertices.varyings, &view.frame,
-                                           view.sample_offset, texcoords_in_lit, out.original_triangle};
+                                           view.sample_offset, texcoords_in_lit, out.original_triangle,
+                                           fill_plan.shade_visible_only ? memory.fill.band_layers.data() : nullptr};
         run_aov_pass(aov_input, out.aov_planes, out.aovs, progress);
     }
 }
