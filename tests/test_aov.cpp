@@ -61,6 +61,27 @@ RenderOptions with_aovs(RenderOptions options, AovRequest aovs = AovRequest::all
     return options;
 }
 
+// A torus at 48x48 and visit(scene, options) for each shader, mode (exact, seed),
+// visibility and sampling (1 and 2x2 samples per pixel).
+template <typename Visit>
+void for_each_torus_render(Visit&& visit) {
+    Scene scene = base_scene(48);
+    scene.mesh = test_meshes::torus(32, 16, 1.2, 0.45);
+    scene.camera.eye = {0.5, 2.5, 4.0};
+    for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
+        for (RenderOptions options : {RenderOptions::exact(), RenderOptions::seed()}) {
+            for (Visibility visibility : {Visibility::painter, Visibility::depth_buffer}) {
+                for (int samples : {1, 2}) {
+                    scene.shader = shader;
+                    options.visibility = visibility;
+                    options.samples_per_axis = samples;
+                    visit(scene, options);
+                }
+            }
+        }
+    }
+}
+
 }  // namespace
 
 TEST_CASE("depth is the analytic camera depth of a tilted plane, in every mode, +infinity off it") {
@@ -194,60 +215,37 @@ TEST_CASE("coverage and ids alone (no plane needing the weights) equal those of 
     // Alpha and id without depth, normal, uv or distance take a path that sets
     // each span's samples without the fill's weights (the thumbnail's alpha);
     // with every plane, each sample's weights are computed. Both must agree.
-    Scene scene = base_scene(48);
-    scene.mesh = test_meshes::torus(32, 16, 1.2, 0.45);
-    scene.camera.eye = {0.5, 2.5, 4.0};
     const AovRequest alone[] = {{false, false, false, true}, {false, false, true, false}, {false, false, true, true}};
-    for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
-        for (RenderOptions options : {RenderOptions::exact(), RenderOptions::seed()}) {
-            for (Visibility visibility : {Visibility::painter, Visibility::depth_buffer}) {
-                for (int samples : {1, 2}) {
-                    scene.shader = shader;
-                    options.visibility = visibility;
-                    options.samples_per_axis = samples;
-                    const RenderResult every = render(scene, with_aovs(options));
-                    REQUIRE(std::count(every.aovs.alpha.begin(), every.aovs.alpha.end(), 0.0f) > 0);
-                    REQUIRE(std::count(every.aovs.alpha.begin(), every.aovs.alpha.end(), 1.0f) > 0);
-                    for (const AovRequest& planes : alone) {
-                        INFO(to_string(shader) << (visibility == Visibility::painter ? ", painter" : ", depth buffer")
-                                               << ", " << samples << "^2 samples, planes " << to_string(planes));
-                        const RenderResult some = render(scene, with_aovs(options, planes));
-                        CHECK(some.image.pixels == every.image.pixels);
-                        CHECK(some.aovs.alpha.size() == (planes.alpha ? every.aovs.alpha.size() : 0));
-                        if (planes.alpha) CHECK(some.aovs.alpha == every.aovs.alpha);
-                        CHECK(some.aovs.id.size() == (planes.id ? every.aovs.id.size() : 0));
-                        if (planes.id) CHECK(some.aovs.id == every.aovs.id);
-                        CHECK(some.aovs.depth.empty());
-                        CHECK(some.aovs.normal.empty());
-                    }
-                }
-            }
+    for_each_torus_render([&](const Scene& scene, const RenderOptions& options) {
+        const RenderResult every = render(scene, with_aovs(options));
+        REQUIRE(std::count(every.aovs.alpha.begin(), every.aovs.alpha.end(), 0.0f) > 0);
+        REQUIRE(std::count(every.aovs.alpha.begin(), every.aovs.alpha.end(), 1.0f) > 0);
+        for (const AovRequest& planes : alone) {
+            INFO(to_string(scene.shader) << (options.visibility == Visibility::painter ? ", painter" : ", depth buffer")
+                                         << ", " << options.samples_per_axis << "^2 samples, planes "
+                                         << to_string(planes));
+            const RenderResult some = render(scene, with_aovs(options, planes));
+            CHECK(some.image.pixels == every.image.pixels);
+            CHECK(some.aovs.alpha.size() == (planes.alpha ? every.aovs.alpha.size() : 0));
+            if (planes.alpha) CHECK(some.aovs.alpha == every.aovs.alpha);
+            CHECK(some.aovs.id.size() == (planes.id ? every.aovs.id.size() : 0));
+            if (planes.id) CHECK(some.aovs.id == every.aovs.id);
+            CHECK(some.aovs.depth.empty());
+            CHECK(some.aovs.normal.empty());
         }
-    }
+    });
 }
 
 TEST_CASE("asking for extra outputs leaves the colour image and the counts as they are") {
-    Scene scene = base_scene(48);
-    scene.mesh = test_meshes::torus(32, 16, 1.2, 0.45);
-    scene.camera.eye = {0.5, 2.5, 4.0};
-    for (Shader shader : {Shader::flat, Shader::gouraud, Shader::phong}) {
-        for (RenderOptions options : {RenderOptions::exact(), RenderOptions::seed()}) {
-            for (Visibility visibility : {Visibility::painter, Visibility::depth_buffer}) {
-                for (int samples : {1, 2}) {
-                    scene.shader = shader;
-                    options.visibility = visibility;
-                    options.samples_per_axis = samples;
-                    const RenderResult plain = render(scene, options);
-                    const RenderResult with = render(scene, with_aovs(options));
-                    CHECK(plain.aovs.depth.empty());
-                    CHECK(plain.aovs.id.empty());
-                    CHECK(with.image.pixels == plain.image.pixels);
-                    CHECK(with.stats.samples_shaded == plain.stats.samples_shaded);
-                    CHECK(with.stats.diffuse_evaluations == plain.stats.diffuse_evaluations);
-                }
-            }
-        }
-    }
+    for_each_torus_render([](const Scene& scene, const RenderOptions& options) {
+        const RenderResult plain = render(scene, options);
+        const RenderResult with = render(scene, with_aovs(options));
+        CHECK(plain.aovs.depth.empty());
+        CHECK(plain.aovs.id.empty());
+        CHECK(with.image.pixels == plain.image.pixels);
+        CHECK(with.stats.samples_shaded == plain.stats.samples_shaded);
+        CHECK(with.stats.diffuse_evaluations == plain.stats.diffuse_evaluations);
+    });
 }
 
 TEST_CASE("extra outputs are the same for 1 and 2 threads, in float and double") {

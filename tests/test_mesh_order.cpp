@@ -52,6 +52,24 @@ bool same_aovs(const AovPlanes& a, const AovPlanes& b) {
     return same(a.depth, b.depth) && same(a.normal, b.normal) && same(a.id, b.id) && same(a.alpha, b.alpha);
 }
 
+/// One render of `scene` in the caller's order (never reordered) and one reordered (always).
+struct RenderedBothWays {
+    RenderResult today, reordered;
+};
+
+RenderedBothWays render_both_ways(const Scene& scene, const RenderOptions& options) {
+    RenderedBothWays both;
+    {
+        ReorderThreshold never(kNever);
+        both.today = render(scene, options);
+    }
+    {
+        ReorderThreshold always(0);
+        both.reordered = render(scene, options);
+    }
+    return both;
+}
+
 /// The mesh with its faces listed in a random order.
 Mesh shuffled_faces(Mesh mesh, unsigned seed) {
     std::mt19937 random(seed);
@@ -194,15 +212,7 @@ TEST_CASE("a reordered mesh renders the same bits in every shader, mode and extr
                     options.visibility = visibility;
                     options.aovs = AovRequest::all();
                     options.threads = 2;
-                    RenderResult today, reordered;
-                    {
-                        ReorderThreshold never(kNever);
-                        today = render(scene, options);
-                    }
-                    {
-                        ReorderThreshold always(0);
-                        reordered = render(scene, options);
-                    }
+                    const auto [today, reordered] = render_both_ways(scene, options);
                     INFO(c.name << ", " << to_string(shader) << ", " << mode.name
                                 << (visibility == Visibility::depth_buffer ? ", depth buffer" : ", painter"));
                     REQUIRE(today.stats.triangles_drawn > 0);
@@ -225,15 +235,7 @@ TEST_CASE("a reordered mesh's ids and alpha alone (no weights computed) name the
             RenderOptions options;
             options.aovs = id_and_alpha;
             options.threads = threads;
-            RenderResult today, reordered;
-            {
-                ReorderThreshold never(kNever);
-                today = render(scene, options);
-            }
-            {
-                ReorderThreshold always(0);
-                reordered = render(scene, options);
-            }
+            const auto [today, reordered] = render_both_ways(scene, options);
             INFO(c.name << ", " << threads << " thread(s)");
             REQUIRE(today.stats.triangles_drawn > 0);
             REQUIRE(today.aovs.id.size() == today.aovs.alpha.size());
@@ -283,15 +285,7 @@ TEST_CASE("a copy holding only triangles (the caller's vertex arrays read throug
                         RenderOptions options = mode.options;
                         options.aovs = variant.aovs;
                         options.threads = threads;
-                        RenderResult today, reordered;
-                        {
-                            ReorderThreshold never(kNever);
-                            today = render(scene, options);
-                        }
-                        {
-                            ReorderThreshold always(0);
-                            reordered = render(scene, options);
-                        }
+                        const auto [today, reordered] = render_both_ways(scene, options);
                         INFO(c.name << ", " << variant.name << ", " << to_string(shader) << ", " << mode.name << ", "
                                     << threads << " thread(s)");
                         REQUIRE(today.stats.triangles_drawn > 0);
@@ -341,15 +335,7 @@ TEST_CASE("supersampled and rotated-grid renders of a reordered mesh are the sam
         options.samples_per_axis = 2;
         options.sample_pattern = pattern;
         options.aovs = AovRequest::all();
-        RenderResult today, reordered;
-        {
-            ReorderThreshold never(kNever);
-            today = render(scene, options);
-        }
-        {
-            ReorderThreshold always(0);
-            reordered = render(scene, options);
-        }
+        const auto [today, reordered] = render_both_ways(scene, options);
         CHECK(same_bits(today.image, reordered.image));
         CHECK(same_aovs(today.aovs, reordered.aovs));
     }
