@@ -26,11 +26,12 @@ glm::vec3 world_from_camera(const CameraFrame& frame, const Vec3<Real>& camera_n
     return glm::vec3(frame.right * n.x + frame.up * n.y + frame.forward * n.z);
 }
 
-// Writes one triangle's samples in one band. The colour fill's weights are
-// recomputed with the same operations, so that with the depth buffer the
-// sample's final depth identifies the triangle the fill let through: the
-// last one (in painter's order) whose depth equals it, since the fill's test
-// lets an equal depth overwrite.
+/// The id output of internal triangle `source`: the caller's index of it.
+template <typename Real>
+std::int32_t caller_id(const AovPassInput<Real>& in, std::uint32_t source) {
+    return static_cast<std::int32_t>(in.original_triangle ? in.original_triangle[source] : source);
+}
+
 /// Whether a plane, or the depth buffer's test of which triangle painted a
 /// sample, needs the fill's weights there. Coverage and the id alone do not.
 bool needs_weights(const AovRequest& planes, const void* depth_buffer) {
@@ -44,7 +45,7 @@ template <typename Real>
 void write_covered(const AovPassInput<Real>& in, const AovRequest& planes, const FillTriangle<Real>& draw,
                    std::uint32_t source, int row_begin, int row_end, AovSamples& out) {
     const std::size_t columns = static_cast<std::size_t>(out.columns);
-    const std::int32_t id = static_cast<std::int32_t>(in.original_triangle ? in.original_triangle[source] : source);
+    const std::int32_t id = caller_id(in, source);
     for_each_covered_span(draw.coverage, row_begin, row_end,
                           [&](int row, int first_column, int count, const std::int64_t*, const std::int64_t*) {
         const std::size_t start = static_cast<std::size_t>(row) * columns + static_cast<std::size_t>(first_column);
@@ -67,11 +68,16 @@ void write_owned(const AovPassInput<Real>& in, const AovRequest& planes, const F
         out.covered[first + s] = 1;
         if (planes.id) {
             const std::uint32_t source = draws[owner[s]]->source;
-            out.id[first + s] = static_cast<std::int32_t>(in.original_triangle ? in.original_triangle[source] : source);
+            out.id[first + s] = caller_id(in, source);
         }
     }
 }
 
+// Writes one triangle's samples in one band. The colour fill's weights are
+// recomputed with the same operations, so that with the depth buffer the
+// sample's final depth identifies the triangle the fill let through: the
+// last one (in painter's order) whose depth equals it, since the fill's test
+// lets an equal depth overwrite.
 template <typename Real, bool Perspective>
 void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, const FillTriangle<Real>& draw,
                     std::uint32_t source, int row_begin, int row_end, AovSamples& out) {
@@ -122,7 +128,7 @@ void write_triangle(const AovPassInput<Real>& in, const AovRequest& planes, cons
                 }
             }
             if (planes.id) {
-                out.id[index] = static_cast<std::int32_t>(in.original_triangle ? in.original_triangle[source] : source);
+                out.id[index] = caller_id(in, source);
             }
             if (planes.uv && in.uv_in_lit) {
                 // As the textured kernels interpolate it: (w0 a + w1 b) + w2 c.
