@@ -1,6 +1,7 @@
 // phongrast render: one scene to one PNG/EXR, optionally timed over --repeat runs.
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <cstdio>
 
 #include "commands.hpp"
@@ -115,18 +116,28 @@ int run_render(const RenderCommand& command) {
     // frame the repeats allocate nothing, so --repeat times the steady state.
     const bool show_bar = messages.shows_progress() && command.repeat == 0;
     prepared.options.progress = progress_bar(show_bar, "rendering");
-    Renderer renderer(prepared.options);
+    // One frame (no --repeat) is a one-off render(), drawn into `one_off`'s
+    // image (no copy out of render()'s kept memory): a Renderer would also
+    // make what only later frames reuse, such as a reordered copy of a mesh
+    // under 2^18 triangles, which one frame does not pay back.
+    std::optional<Renderer> renderer;
+    if (command.repeat > 0) renderer.emplace(prepared.options);
     if (timing.warm_up) {
         messages.progress(0, runs, "warm-up");
         const Clock::time_point start = Clock::now();
-        renderer.render(prepared.scene);
+        renderer->render(prepared.scene);
         timing.warm_up_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     }
-    const RenderResult* last = nullptr;
+    RenderResult one_off;
+    const RenderResult* last = &one_off;
     for (int run = 0; run < runs; ++run) {
         if (runs > 1) messages.progress(run + 1, runs, "rendering");
         const Clock::time_point start = Clock::now();
-        last = &renderer.render(prepared.scene);
+        if (renderer) {
+            last = &renderer->render(prepared.scene);
+        } else {
+            render(prepared.scene, prepared.options, one_off);
+        }
         timing.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     }
     const RenderResult& result = *last;

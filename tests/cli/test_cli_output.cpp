@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -13,10 +14,14 @@
 
 #include "cli_run.hpp"
 #include "io_test_files.hpp"
+// Internal: the reordering thresholds this test straddles.
+#include "mesh_order.hpp"
 #include "phongrast/io/image_file.hpp"
 #include "phongrast/io/obj_file.hpp"
 #include "phongrast/io/scene_file.hpp"
 #include "phongrast/render.hpp"
+#include "shuffled_mesh.hpp"
+#include "support/meshes.hpp"
 
 using namespace phongrast;
 
@@ -137,6 +142,31 @@ TEST_CASE("options repeat K and stats-json report K timed runs and the render st
     CHECK(once_stats["render_seconds"]["warm_up"] == false);
     CHECK_FALSE(once_stats["render_seconds"].contains("first"));
     CHECK(once_stats["render_seconds"]["runs"].size() == 1);
+}
+
+TEST_CASE("one frame (render()) and repeated frames (a Renderer, which reorders this mesh) write the same floats") {
+    // 128,000 triangles in a shuffled order: a Renderer renders a reordered copy
+    // (from 16,384 triangles), the single frame the file's order (render(): from 2^18).
+    Mesh sphere = support::icosphere(80, 0.05);
+    std::mt19937 random(7);
+    test_meshes_order::shuffle_faces_and_vertices(sphere, random);
+    REQUIRE(detail::local_order_misses(sphere) > detail::kReorderMinMissesPerTriangle);
+    REQUIRE(sphere.triangles.size() >= detail::reorder_min_triangles(false));
+    REQUIRE(sphere.triangles.size() < detail::reorder_min_triangles(true));
+    TemporaryFolder folder;
+    io::write_obj(sphere, folder.file("sphere.obj"));
+    for (const char* shader : {"gouraud", "phong"}) {
+        INFO(shader);
+        const std::string mesh = "render '" + folder.file("sphere.obj") + "' --size 96x64 --shader " + shader;
+        const Run once = run_cli(folder, mesh + " -o once.exr");
+        const Run repeated = run_cli(folder, mesh + " --repeat 1 -o repeated.exr");
+        INFO(once.err << repeated.err);
+        REQUIRE(once.status == 0);
+        REQUIRE(repeated.status == 0);
+        const Image image = io::read_image(folder.file("once.exr"));
+        CHECK(std::count(image.pixels.begin(), image.pixels.end(), image.pixels[0]) < 96 * 64 - 1000);  // the sphere shows
+        CHECK(image.pixels == io::read_image(folder.file("repeated.exr")).pixels);
+    }
 }
 
 TEST_CASE("a scene naming a PLY mesh, and a GLB given alone, render as their OBJ twin does") {
