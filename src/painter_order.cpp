@@ -131,10 +131,14 @@ Digit leading_digit(const SetupRecords& records, PainterOrderMemory& memory, Pro
     memory.group_min.assign(groups, std::numeric_limits<std::uint64_t>::max());
     memory.group_max.assign(groups, 0);
     tbb::parallel_for(std::size_t(0), groups, [&](std::size_t group) {
+        // In locals, stored once: neighbouring groups' slots share a cache line.
+        std::uint64_t low = std::numeric_limits<std::uint64_t>::max(), high = 0;
         records.for_each_in_group(group, [&](std::uint64_t key, const DrawSpan&) {
-            memory.group_min[group] = std::min(memory.group_min[group], key);
-            memory.group_max[group] = std::max(memory.group_max[group], key);
+            low = std::min(low, key);
+            high = std::max(high, key);
         });
+        memory.group_min[group] = low;
+        memory.group_max[group] = high;
         progress.piece_done();
     });
     const std::uint64_t base = groups == 0 ? 0 : *std::min_element(memory.group_min.begin(), memory.group_min.end());
