@@ -22,6 +22,8 @@
 // Internal: detail::set_mesh_order_walk_choice, for --walk and --walk-against-sorted.
 #include "fill_driver.hpp"
 #include "phongrast/render.hpp"
+// Internal: detail::record_stage_times, for --stages.
+#include "stage_times.hpp"
 #include "support/speed_scenes.hpp"
 #include "support/timing.hpp"
 
@@ -103,7 +105,7 @@ struct Settings {
     std::string name = "icosphere-9.7k", shader = "phong", mode = "exact", precision = "float";
     std::string overdraw = "auto", isa = "best", lighting, dump, walk = "auto";
     int rows = 0, threads = 1, repeat = 5, warmup = 1;
-    bool steps = false, walk_against_sorted = false;
+    bool steps = false, walk_against_sorted = false, stages = false;
 };
 
 phongrast::RenderOptions options_for(const Settings& s) {
@@ -123,6 +125,24 @@ void dump_pixels(const std::string& path, const phongrast::Image& image) {
     std::fclose(file);
 }
 
+/// --stages: the median wall time of each stage over the timed passes, and
+/// what the frame spends outside them (its median less their sum: validation,
+/// the mesh order's check, resolve, the result's hand-over).
+void print_stage_times(const std::vector<phongrast::detail::PassStageTimes>& passes, double frame_ms) {
+    using phongrast::detail::Stage;
+    std::printf("stages, median ms per pass over %zu passes:", passes.size());
+    double sum = 0.0;
+    for (std::size_t stage = 0; stage < phongrast::detail::kStageCount; ++stage) {
+        std::vector<double> ms;
+        for (const phongrast::detail::PassStageTimes& pass : passes) ms.push_back(pass[stage] * 1e3);
+        const double median = ms.empty() ? 0.0 : support::median(ms);
+        if (median == 0.0) continue;  // a stage this scene skips
+        sum += median;
+        std::printf(" %s %.3f |", phongrast::detail::stage_name(static_cast<Stage>(stage)), median);
+    }
+    std::printf(" outside the passes %.3f\n", frame_ms - sum);
+}
+
 /// Renders `repeat` times after `warmup` with one Renderer (as an application
 /// renders frame after frame) and prints the times, counts and memory.
 void time_renders(const Settings& s, const support::NamedScene& named, const phongrast::RenderOptions& options) {
@@ -133,6 +153,10 @@ void time_renders(const Settings& s, const support::NamedScene& named, const pho
     for (int i = 0; i < s.warmup; ++i) renderer.render(named.scene);
     std::vector<double> ms;
     phongrast::RenderResult result;
+    if (s.stages) {
+        phongrast::detail::take_stage_times();  // the warm-up's
+        phongrast::detail::record_stage_times(true);
+    }
     for (int i = 0; i < s.repeat; ++i) {
         ms.push_back(support::time_ms([&] {
             const phongrast::RenderResult& frame = renderer.render(named.scene);
@@ -140,6 +164,10 @@ void time_renders(const Settings& s, const support::NamedScene& named, const pho
         }));
     }
     if (!s.dump.empty()) dump_pixels(s.dump, result.image);
+    if (s.stages) {
+        phongrast::detail::record_stage_times(false);
+        print_stage_times(phongrast::detail::take_stage_times(), support::median(ms));
+    }
     std::printf("%s %dx%d %s %s threads=%d: median %.3f ms, min %.3f, max %.3f (%d renders); "
                 "%llu triangles drawn, %llu samples; peak RSS %.1f MiB (%.1f MiB before rendering)\n",
                 s.name.c_str(), named.scene.image.columns, named.scene.image.rows, s.shader.c_str(), s.mode.c_str(),
@@ -177,6 +205,9 @@ int main(int argc, char** argv) {
     app.add_flag("--walk-against-sorted", s.walk_against_sorted,
                  "time the fill in mesh order against the sorted fill in interleaved rounds in this process; print a "
                  "Markdown row: medians in ms, walk / sorted, whether it walked, same image");
+    app.add_flag("--stages", s.stages,
+                 "also print the median time of each stage of the render pass (vertices, set-up, painter's order, "
+                 "binning, fill, walks, ...) and the rest of the frame");
     app.add_option("--lighting", s.lighting, "the scene's lighting instead of its own, as the command names it (ambient, full, ...)");
     app.add_option("--dump", s.dump, "write the last image's raw float RGB pixels here (to compare two builds with cmp)");
     CLI11_PARSE(app, argc, argv);

@@ -5,6 +5,7 @@
 
 #include "back_faces.hpp"
 #include "effects.hpp"
+#include "stage_times.hpp"
 #include "term_counts.hpp"
 #include "view.hpp"
 
@@ -103,11 +104,13 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
         out.caller_vertices.mesh != nullptr ? out.caller_vertices.mesh->colors : scene.mesh.colors;
     const EffectSet effects = find_effects(scene, colors);
     stats.effects = effects;
+    StageClock clock;
 
     // Vertex stage.
     const bool need_normals = effects.normals || !options.specialize_effects || out.aov_planes.normal;
     transform_vertices(scene.mesh, out.caller_vertices, view, need_normals, memory.vertex_stage, memory.vertices,
                        progress);
+    clock.lap(Stage::vertices);
     place_near_plane(view, memory.vertices.screen);
     const HiddenBackFaces cull = back_faces_to_cull(scene, options, view, memory.vertices);
     stats.back_faces_culled = cull != HiddenBackFaces::unknown;
@@ -143,6 +146,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                    in_parts ? memory.colour_part_shaders.data() : nullptr,
                                    in_parts ? memory.specular_part_shaders.data() : nullptr};
     const bool exact_gouraud = scene.shader == Shader::gouraud && options.light_vectors == LightVectors::shaded_point;
+    clock.lap(Stage::faces);
     if (exact_gouraud && in_parts) {
         light_vertices_in_parts(point_shader, vertex_materials, parts, memory.vertices.varyings,
                                 memory.vertex_colour_parts, memory.vertex_stage);
@@ -153,6 +157,8 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
         count_term_evaluations(scene, options, effects, memory.vertices.varyings.size(), LitPoints::outside_the_fill,
                                stats);
     }
+
+    clock.lap(Stage::vertex_lights);
 
     // Set-up first, in mesh order; then painter's order of what draws; then bands in that order.
     const SetupInput<Real> setup{scene,
@@ -172,14 +178,17 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
         fill_plan.may_fill_in_mesh_order
             ? sampled_samples_per_triangle(scene.mesh.triangles, memory.vertices.screen, rows, columns)
             : 0.0;
+    clock.lap(Stage::faces);  // the triangles' sizes, sampled to choose the walk
     if (fills_in_mesh_order(fill_plan, out.aov_planes.any(), samples_per_triangle)) {
         // Small triangles, nothing lit per sample: no record, sort or bins; a walk of the mesh per
         // thread (fill_driver.hpp).
         fill_in_mesh_order(scene, options, fill_plan, setup, out.original_triangle, rows, columns, memory.draws,
                            memory.fill, out.image, stats, progress);
+        clock.lap(Stage::walk);
         return;
     }
     set_up_triangles(setup, memory.draws, stats, progress);
+    clock.lap(Stage::setup);
     const bool sort = !fill_plan.order_free || out.aov_planes.any();  // depth and id name the last triangle
     // Mesh order hook: a reordered mesh's equal depths are drawn in the caller's triangle order.
     const std::uint32_t* original = out.original_triangle;
@@ -189,10 +198,13 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     painter_order(memory.draws.chunk_drawn, memory.draws.chunk_keys, memory.draws.chunks, sort, memory.painter,
                   progress, tie_rank);
     if (sort) stats.triangles_sorted += memory.painter.sorted.size();
+    clock.lap(Stage::painter_order);
     bin_draws(memory.draws, memory.painter, rows, memory.binning, memory.bins, progress.poll_function());
+    clock.lap(Stage::binning);
 
     progress.begin_stage(0.4, out.aov_planes.any() ? 0.9 : 1.0, static_cast<std::size_t>(memory.bins.bands));
     fill_bins(scene, options, fill_plan, memory.bins, rows, columns, memory.fill, out.image, stats, progress);
+    clock.lap(Stage::fill);
 
     if (out.aov_planes.any()) {
         out.aovs.reset(rows, columns, out.aov_planes);
@@ -203,6 +215,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
                                            view.sample_offset, texcoords_in_lit, out.original_triangle,
                                            fill_plan.shade_visible_only ? memory.fill.band_layers.data() : nullptr};
         run_aov_pass(aov_input, out.aov_planes, out.aovs, progress);
+        clock.lap(Stage::extra_outputs);
     }
 }
 
