@@ -497,8 +497,8 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
         // after it: in the list, two chunks' vector headers and counts share
         // cache lines, and each triangle writes them (a vector's end, a
         // count). Two threads writing one line made set-up 3x slower at 2
-        // threads than at 1 on spot (512²); in locals the compiler also keeps
-        // the vectors' ends in registers.
+        // threads than at 1 on spot (512², docs/performance.md "Where the
+        // time goes now").
         ChunkVector<FillTriangle<Real>> out = std::move(draws.chunk_draws[chunk]);
         ChunkVector<DrawSpan> drawn = std::move(draws.chunk_drawn[chunk]);
         ChunkVector<std::uint64_t> keys = std::move(draws.chunk_keys[chunk]);
