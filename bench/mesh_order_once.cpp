@@ -22,6 +22,8 @@
 #include "mesh_order.hpp"
 #include "mesh_orders.hpp"
 #include "phongrast/render.hpp"
+#include "stage_table.hpp"
+#include "stage_times.hpp"
 #include "support/scenes.hpp"
 #include "support/speed_scenes.hpp"
 #include "support/timing.hpp"
@@ -48,6 +50,8 @@ struct Settings {
     bool cpu_time = false;
     /// The fill in mesh order's choice: auto, always or never (fill_driver.hpp).
     std::string walk = "auto";
+    /// Each contender's stage medians (src/stage_times.hpp) after the table.
+    bool stages = false;
 };
 
 /// The process's CPU time in milliseconds (every thread's).
@@ -74,6 +78,12 @@ struct Contender {
     bool reorder = true, one_off = false;
 };
 
+/// --stages: each contender's recorded passes (not its warm-up round's).
+struct ContenderStages {
+    std::vector<phongrast::detail::PassStageTimes> passes;
+    int calls = 0;
+};
+
 /// The image's raw float RGB pixels written to `path` (to compare builds and orders with cmp).
 void dump_pixels(const std::string& path, const phongrast::Image& image) {
     std::FILE* file = std::fopen(path.c_str(), "wb");
@@ -94,8 +104,10 @@ std::string file_name_of(const std::string& label) {
 
 /// Reordering as the library does it by default (both thresholds, the locality test).
 /// With `dump`, each contender's last image is written to dump + its label + ".rgb".
+/// With `stages` (one per contender), each contender's passes are recorded there.
 std::vector<double> time_contenders(std::vector<Contender>& contenders, const phongrast::RenderOptions& options,
-                                   int repeat, const std::string& dump = {}) {
+                                   int repeat, const std::string& dump = {},
+                                   std::vector<ContenderStages>* stages = nullptr) {
     const std::size_t defaults = phongrast::detail::set_reorder_min_triangles(0);
     phongrast::detail::set_reorder_min_triangles(defaults);
     std::vector<phongrast::Renderer> renderers;
@@ -105,6 +117,7 @@ std::vector<double> time_contenders(std::vector<Contender>& contenders, const ph
         calls.push_back([&, k] {
             const Contender& c = contenders[k];
             const std::size_t previous = phongrast::detail::set_reorder_min_triangles(c.reorder ? defaults : kNever);
+            if (stages != nullptr) phongrast::detail::record_stage_times(true);
             phongrast::RenderResult one_off;  // render()'s, kept for --dump (destroyed after the timing)
             const phongrast::RenderResult* last = &one_off;
             const double ms = time_work_ms([&] {
@@ -115,6 +128,12 @@ std::vector<double> time_contenders(std::vector<Contender>& contenders, const ph
                 }
             });
             phongrast::detail::set_reorder_min_triangles(previous);
+            if (stages != nullptr) {
+                phongrast::detail::record_stage_times(false);
+                const std::vector<phongrast::detail::PassStageTimes> passes = phongrast::detail::take_stage_times();
+                ContenderStages& mine = (*stages)[k];
+                if (mine.calls++ > 0) mine.passes.insert(mine.passes.end(), passes.begin(), passes.end());
+            }
             if (!dump.empty()) dump_pixels(dump + file_name_of(c.label) + ".rgb", last->image);
             return ms;
         });
@@ -149,7 +168,9 @@ void run_orders(const Settings& s) {
         contenders.push_back({order + ", render()", scene, true, true});
         contenders.push_back({order + ", render(), not reordered", scene, false, true});
     }
-    const std::vector<double> ms = time_contenders(contenders, options_for(s), s.repeat, s.dump);
+    std::vector<ContenderStages> stages(contenders.size());
+    const std::vector<double> ms =
+        time_contenders(contenders, options_for(s), s.repeat, s.dump, s.stages ? &stages : nullptr);
     const double spatial = ms[spatial_index];
     std::printf("\n%s, %zu triangles, %dx%d, %s, %s normals, %d thread(s), median of %d interleaved rounds%s\n\n",
                 s.scene.c_str(), base.mesh.triangles.size(), base.image.columns, base.image.rows, s.shader.c_str(),
@@ -157,6 +178,12 @@ void run_orders(const Settings& s) {
     std::printf("| mesh order, how | %s | / spatial (Renderer) |\n|---|---:|---:|\n", s.cpu_time ? "CPU ms" : "ms");
     for (std::size_t k = 0; k < contenders.size(); ++k) {
         std::printf("| %s | %.1f | %.3f |\n", contenders[k].label.c_str(), ms[k], ms[k] / spatial);
+    }
+    if (!s.stages) return;
+    std::printf("\n");
+    for (std::size_t k = 0; k < contenders.size(); ++k) {
+        std::printf("%s: %s\n", contenders[k].label.c_str(),
+                    phongrast_bench::stage_medians_line(stages[k].passes, ms[k]).c_str());
     }
 }
 
@@ -225,6 +252,9 @@ int main(int argc, char** argv) {
     app.add_flag("--sweep", s.sweep, "icospheres of 5k-1.3M triangles: where reordering starts to pay");
     app.add_option("--walk", s.walk, "the fill in mesh order: auto (the render's choice), always or never")
         ->check(CLI::IsMember({"auto", "always", "never"}));
+    app.add_flag("--stages", s.stages,
+                 "also print each contender's median time per render-pass stage (vertices, walks, ...) and the rest of "
+                 "the frame");
     CLI11_PARSE(app, argc, argv);
     g_cpu_time = s.cpu_time;
     if (s.walk != "auto") {

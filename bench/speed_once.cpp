@@ -23,6 +23,7 @@
 #include "fill_driver.hpp"
 #include "phongrast/render.hpp"
 // Internal: detail::record_stage_times, for --stages.
+#include "stage_table.hpp"
 #include "stage_times.hpp"
 #include "support/speed_scenes.hpp"
 #include "support/timing.hpp"
@@ -125,24 +126,6 @@ void dump_pixels(const std::string& path, const phongrast::Image& image) {
     std::fclose(file);
 }
 
-/// --stages: the median wall time of each stage over the timed passes, and
-/// what the frame spends outside them (its median less their sum: validation,
-/// the mesh order's check, resolve, the result's hand-over).
-void print_stage_times(const std::vector<phongrast::detail::PassStageTimes>& passes, double frame_ms) {
-    using phongrast::detail::Stage;
-    std::printf("stages, median ms per pass over %zu passes:", passes.size());
-    double sum = 0.0;
-    for (std::size_t stage = 0; stage < phongrast::detail::kStageCount; ++stage) {
-        std::vector<double> ms;
-        for (const phongrast::detail::PassStageTimes& pass : passes) ms.push_back(pass[stage] * 1e3);
-        const double median = ms.empty() ? 0.0 : support::median(ms);
-        if (median == 0.0) continue;  // a stage this scene skips
-        sum += median;
-        std::printf(" %s %.3f |", phongrast::detail::stage_name(static_cast<Stage>(stage)), median);
-    }
-    std::printf(" outside the passes %.3f\n", frame_ms - sum);
-}
-
 /// Renders `repeat` times after `warmup` with one Renderer (as an application
 /// renders frame after frame) and prints the times, counts and memory.
 void time_renders(const Settings& s, const support::NamedScene& named, const phongrast::RenderOptions& options) {
@@ -166,7 +149,8 @@ void time_renders(const Settings& s, const support::NamedScene& named, const pho
     if (!s.dump.empty()) dump_pixels(s.dump, result.image);
     if (s.stages) {
         phongrast::detail::record_stage_times(false);
-        print_stage_times(phongrast::detail::take_stage_times(), support::median(ms));
+        std::printf("%s\n",
+                    phongrast_bench::stage_medians_line(phongrast::detail::take_stage_times(), support::median(ms)).c_str());
     }
     std::printf("%s %dx%d %s %s threads=%d: median %.3f ms, min %.3f, max %.3f (%d renders); "
                 "%llu triangles drawn, %llu samples; peak RSS %.1f MiB (%.1f MiB before rendering)\n",
