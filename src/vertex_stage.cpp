@@ -2,6 +2,7 @@
 
 #include "fill_types.hpp"
 #include "normalize_lanes.hpp"
+#include "prefetch.hpp"
 #include "resize_polling.hpp"
 #include "shade_lanes.hpp"
 
@@ -94,6 +95,14 @@ void transform_gathered(const Mesh& caller, const std::uint32_t* source, const s
         }
         if (normals != nullptr) {
             for (std::size_t k = 0; k < n; ++k) gathered_normals[k] = (*normals)[source[first + k]];
+        }
+        // The next block's caller vertices, asked for now so that their cache
+        // misses overlap this block's transform instead of the next gather.
+        const std::size_t next_end = std::min(end, first + n + kGatherLanes);
+        for (std::size_t i = first + n; i < next_end; ++i) {
+            prefetch_object(&caller.positions[source[i]]);
+            if (coloured) prefetch_object(&caller.colors[source[i]]);
+            if (normals != nullptr) prefetch_object(&(*normals)[source[i]]);
         }
         transform_span(positions, coloured ? colors : nullptr, normals != nullptr ? gathered_normals : nullptr,
                        first, n, view, out);
