@@ -95,14 +95,21 @@ std::uint32_t grid_coordinate(double scaled) {
     return scaled >= kFineCells - 1 ? kFineCells - 1 : static_cast<std::uint32_t>(scaled);
 }
 
+/// x's low 10 bits moved to bits 0, 3, 6, ..., 27 (the usual shifts and masks).
+std::uint32_t spread_bits(std::uint32_t x) {
+    x &= 0x3ffu;
+    x = (x | (x << 16)) & 0x030000ffu;
+    x = (x | (x << 8)) & 0x0300f00fu;
+    x = (x | (x << 4)) & 0x030c30c3u;
+    x = (x | (x << 2)) & 0x09249249u;
+    return x;
+}
+
 /// The 30-bit Morton code of a fine cell: x, y and z bits interleaved, so
 /// that its top 18 bits are the Morton code of the cell holding it.
 std::uint32_t morton_code(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
-    std::uint32_t code = 0;
-    for (int bit = 0; bit < kFineBits; ++bit) {
-        code |= ((x >> bit) & 1u) << (3 * bit) | ((y >> bit) & 1u) << (3 * bit + 1) | ((z >> bit) & 1u) << (3 * bit + 2);
-    }
-    return code;
+    static_assert(kFineBits == 10, "spread_bits() spreads 10 bits");
+    return spread_bits(x) | spread_bits(y) << 1 | spread_bits(z) << 2;
 }
 
 /// A few triangles of the mesh, hashed: with the arrays' addresses and
@@ -238,7 +245,7 @@ double local_order_misses(const Mesh& mesh) {
     return double(misses) / double(read);
 }
 
-void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll) {
+void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<void()>& poll, WithinCells within) {
     order.vertex_corners_made = false;  // made for the permutation being replaced
     order.triangles_copied = false;
     const auto report = [&poll] {
@@ -247,11 +254,8 @@ void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<
     const std::size_t triangles = mesh.triangles.size(), vertices = mesh.positions.size();
     // Triangles by the Morton code of their centroid's cell in a 64^3 grid
     // over the mesh's bounding box (one counting sort: meshopt_spatialSortRemap's
-    // full 30-bit sort took 0.25 s of a 1.3M-triangle frame), then within each
-    // cell by the code of a 1024^3 grid's, the caller's order breaking ties.
-    // Ordered within a cell by the caller's order alone, a shuffled mesh's
-    // copy walked its cells' triangles at random: its set-up took 1.4x the
-    // spatially ordered mesh's (branches that follow the triangles' shapes).
+    // full 30-bit sort took 0.25 s of a 1.3M-triangle frame), and within a
+    // cell in the caller's order or by a 1024^3 grid's code (WithinCells).
     glm::dvec3 low(std::numeric_limits<double>::max()), high(std::numeric_limits<double>::lowest());
     for (const glm::dvec3& p : mesh.positions) {
         low = glm::min(low, p);
@@ -276,26 +280,30 @@ void compute_mesh_order(const Mesh& mesh, MeshOrder& order, const std::function<
     for (std::uint32_t fine : code) ++start[(fine >> kWithinCellBits) + 1];
     for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
     order.triangle_source.resize(triangles);
-    // The counting sort moves each start[c] to its cell's end: start[c] is then where cell c + 1 begins.
+    // Each start[c] moves to its cell's end: then start[c] is where cell c + 1 begins.
     for (std::size_t t = 0; t < triangles; ++t) {
         order.triangle_source[start[code[t] >> kWithinCellBits]++] = static_cast<std::uint32_t>(t);
     }
     report();
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, start.size() - 1, 4096),
-                      [&](const tbb::blocked_range<std::size_t>& cells) {
-        std::vector<std::uint64_t> keyed;  // (fine code, caller's index) of one cell's triangles
-        for (std::size_t c = cells.begin(); c != cells.end(); ++c) {
-            const std::size_t begin = c == 0 ? 0 : start[c - 1], end = start[c];
-            if (end - begin < 2) continue;
-            keyed.clear();
-            for (std::size_t k = begin; k < end; ++k) {
-                const std::uint32_t t = order.triangle_source[k];
-                keyed.push_back(std::uint64_t(code[t]) << 32 | t);
+    if (within == WithinCells::by_finer_grid) {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, start.size() - 1, 4096),
+                          [&](const tbb::blocked_range<std::size_t>& cells) {
+            std::vector<std::uint64_t> keyed;  // (fine code, caller's index) of one cell's triangles
+            for (std::size_t c = cells.begin(); c != cells.end(); ++c) {
+                const std::size_t begin = c == 0 ? 0 : start[c - 1], end = start[c];
+                if (end - begin < 2) continue;
+                keyed.clear();
+                for (std::size_t k = begin; k < end; ++k) {
+                    const std::uint32_t t = order.triangle_source[k];
+                    keyed.push_back(std::uint64_t(code[t]) << 32 | t);
+                }
+                std::sort(keyed.begin(), keyed.end());
+                for (std::size_t k = begin; k < end; ++k) {
+                    order.triangle_source[k] = static_cast<std::uint32_t>(keyed[k - begin]);
+                }
             }
-            std::sort(keyed.begin(), keyed.end());
-            for (std::size_t k = begin; k < end; ++k) order.triangle_source[k] = static_cast<std::uint32_t>(keyed[k - begin]);
-        }
-    });
+        });
+    }
     std::vector<std::uint32_t>().swap(code);
     report();
 
@@ -381,7 +389,8 @@ const Scene& scene_in_render_order(const Scene& scene, const RenderOptions& opti
             // `poll`) leaves half-written permutations that must not pass for this mesh's.
             order.positions_data = nullptr;
             order.triangles_data = nullptr;
-            compute_mesh_order(mesh, order, poll);
+            // A Renderer keeps the permutation for frame after frame: it orders the cells too.
+            compute_mesh_order(mesh, order, poll, one_off ? WithinCells::callers_order : WithinCells::by_finer_grid);
         }
         order.positions_data = mesh.positions.data();
         order.triangles_data = mesh.triangles.data();
