@@ -201,7 +201,7 @@ TEST_CASE("the locality test tells a generator's order and the spatial one from 
     CHECK(detail::local_order_misses(Mesh{}) == 0.0);
 }
 
-TEST_CASE("a Renderer's order lists the triangles alike whatever order the mesh comes in; render()'s need not") {
+TEST_CASE("a Renderer's order lists the triangles alike whatever order the mesh comes in, render()'s need not") {
     // 72,000 triangles: about 50 in each occupied cell of the 64^3 grid, far
     // fewer per cell of the 1024^3 one (ties there keep the caller's order).
     const Mesh sphere = test_meshes::icosphere(60, 0.08);
