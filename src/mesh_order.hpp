@@ -182,7 +182,7 @@ enum class WithinCells {
     /// the same order whatever order the mesh comes in. In the caller's
     /// order, a shuffled 1.3M sphere's cells list their triangles at random,
     /// and its walk took 16-20 ms (set-up 1.4x) more than the spatially
-    /// ordered mesh's; by the finer grid 3-6 ms. The cells' sorts cost 18-25
+    /// ordered mesh's; by the finer grid 3-7 ms. The cells' sorts cost 18-25
     /// ms more at 1.3M (2 threads), which a Renderer pays once per mesh and
     /// render() would pay on every call: render() keeps the caller's order.
     by_finer_grid,
