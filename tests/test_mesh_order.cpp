@@ -206,7 +206,7 @@ TEST_CASE("a Renderer's order lists the triangles alike whatever order the mesh 
     // fewer per cell of the 1024^3 one (ties there keep the caller's order).
     const Mesh sphere = test_meshes::icosphere(60, 0.08);
     const Mesh shuffled = shuffled_faces(sphere, 21);
-    // shuffled.triangles[k] is sphere.triangles[shuffled_from[k]]: the triangles are told apart by their corners.
+    // sphere_index_of[k]: the index in `sphere` of shuffled's triangle k, found by sorting both lists by corners.
     std::vector<std::uint32_t> sphere_index_of(sphere.triangles.size());
     {
         std::vector<std::uint32_t> by_corners(sphere.triangles.size());
@@ -234,6 +234,21 @@ TEST_CASE("a Renderer's order lists the triangles alike whatever order the mesh 
     INFO("triangles in the same place: finer grid " << by_finer_grid << ", caller's order " << callers_order);
     CHECK(by_finer_grid > 0.99);  // 1 when measured
     CHECK(callers_order < 0.5);  // random within each cell: 0.23 when measured
+}
+
+TEST_CASE("a Renderer's reordering orders each cell by the finer grid, a one-off render by the caller's order") {
+    const Scene scene = sphere_scene(shuffled_faces(test_meshes::icosphere(60, 0.08), 22));
+    const RenderOptions options = RenderOptions::exact();
+    ReorderThreshold always(0);
+    for (const bool one_off : {false, true}) {
+        INFO((one_off ? "render()" : "Renderer"));
+        detail::MeshOrder kept, expected;
+        const Scene& rendered = detail::scene_in_render_order(scene, options, one_off, kept);
+        REQUIRE(&rendered != &scene);  // reordered
+        detail::compute_mesh_order(scene.mesh, expected, nullptr,
+                                   one_off ? detail::WithinCells::callers_order : detail::WithinCells::by_finer_grid);
+        CHECK(kept.triangle_source == expected.triangle_source);
+    }
 }
 
 TEST_CASE("a reordered mesh renders the same bits in every shader, mode and extra output") {
