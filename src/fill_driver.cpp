@@ -32,10 +32,10 @@ bool stop_requested(ProgressMonitor& progress) {
 }
 
 /// Overdraw::automatic picks shade_visible only for per-sample lighting:
-/// there shading a sample costs several times the second coverage pass,
-/// while Gouraud's or flat's per-sample work (an interpolation, a store)
-/// costs about what the pass does (docs/performance.md, "Overdraw and
-/// instruction sets").
+/// there shading a sample costs several times claiming it, while Gouraud's
+/// or flat's per-sample work (an interpolation, a store) costs about what
+/// the claims do (Gouraud visible / all 0.97-1.09 on the 512² meshes;
+/// docs/performance.md, "Overdraw and instruction sets").
 bool overdraw_shades_visible_only(const Scene& scene, const RenderOptions& options, const EffectSet& effects) {
     switch (options.overdraw) {
         case Overdraw::shade_all: return false;
@@ -57,43 +57,33 @@ void prefetch_corners(const FillTriangle<Real>& draw) {
     for (const Varyings<Real>* corner : draw.v) prefetch_object(corner);
 }
 
-/// Overdraw::shade_visible for one band: pass one records which of the
-/// band's triangles paints each sample last (painter's order: the last
-/// one to cover it); pass two shades, in the same order, only the
-/// triangles that own a sample, and of each only the samples it owns.
-/// Every sample gets the colour the classic fill leaves there, computed
-/// by the same kernel from the same weights, once.
-/// Returns the samples covered (pass one's count).
+/// Overdraw::shade_visible for one band: the draws go in reverse painter's
+/// order, nearest first, and each claims and shades the samples no draw has
+/// claimed yet (FillTarget::owner). The first to claim a sample is the last
+/// painter's order draws there, so every sample gets the colour the classic
+/// fill leaves there, computed by the same kernel from the same weights, once,
+/// and the owner buffer ends naming that draw (read by the extra outputs).
+/// One pass: a draw painted over entirely costs its coverage, no shading.
+/// (It replaced two passes in painter's order, owners recorded by coverage
+/// alone, then the owned samples shaded: 0.83-0.97x the time for Phong,
+/// docs/performance.md.) Returns the samples covered.
 template <typename Real>
-std::uint64_t fill_visible_layer(const FillPlan<Real>& plan, const FillTriangle<Real>* const* draws,
+std::uint64_t fill_nearest_first(const FillPlan<Real>& plan, const FillTriangle<Real>* const* draws,
                                  std::uint32_t count, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
                                  VisibleLayer& layer, ProgressMonitor& progress) {
     const std::size_t samples = static_cast<std::size_t>(target.row_end - target.row_begin) *
                                 static_cast<std::size_t>(target.image.columns);
     assign_populated(layer.owner, samples, kNoOwner);
-    std::uint64_t covered = 0;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return covered;
-        if (i + kPrefetchAhead < count) prefetch_object(draws[i + kPrefetchAhead]);
-        covered += record_owner(*draws[i], target, i, layer.owner.data());
-    }
-    layer.shown.assign(count, 0);
-    for (const std::uint32_t owner : layer.owner) {
-        if (owner != kNoOwner) layer.shown[owner] = 1;
-    }
     target.owner = layer.owner.data();
-    for (std::uint32_t i = 0; i < count; ++i) {
-        if (i % kDrawsBetweenPolls == 0 && stop_requested(progress)) return covered;
-        // Pass one read the draws long ago (a band can hold thousands): ask for the shown ones again.
-        if (i + kPrefetchAhead < count && layer.shown[i + kPrefetchAhead]) prefetch_object(draws[i + kPrefetchAhead]);
-        if (plan.reads_corners && i + kCornersAhead < count && layer.shown[i + kCornersAhead]) {
-            prefetch_corners(*draws[i + kCornersAhead]);
-        }
-        if (!layer.shown[i]) continue;  // entirely painted over: no shading at all
+    for (std::uint32_t done = 0; done < count; ++done) {
+        if (done % kDrawsBetweenPolls == 0 && stop_requested(progress)) return target.covered;
+        const std::uint32_t i = count - 1 - done;
+        if (i >= kPrefetchAhead) prefetch_object(draws[i - kPrefetchAhead]);
+        if (plan.reads_corners && i >= kCornersAhead) prefetch_corners(*draws[i - kCornersAhead]);
         target.self = i;
         plan.kernel(*draws[i], target, vectors, plan.constants);
     }
-    return covered;
+    return target.covered;
 }
 
 /// The classic painter's fill of one band: every triangle shades every
@@ -147,7 +137,7 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     plan.effects = effects;
     plan.depth_test = options.visibility == Visibility::depth_buffer;
     plan.shade_visible_only = !plan.depth_test && overdraw_shades_visible_only(scene, options, effects);
-    // A texture lookup per sample costs more than the second coverage pass too,
+    // A texture lookup per sample costs more than claiming the sample too,
     // in every shader (bench_texture_cost: Gouraud and flat interpolate (s, t)
     // and read four texels per sample, most of their per-sample work).
     if (textures != nullptr && options.overdraw == Overdraw::automatic) {
@@ -209,7 +199,7 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
         LightVectorsAt<Real>& vectors = memory.band_vectors[band];
         memory.covered[band] =
             plan.shade_visible_only
-                ? fill_visible_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors,
+                ? fill_nearest_first(plan, bins.band_draws(band), bins.band_size(band), target, vectors,
                                      memory.band_layers[band], progress)
                 : fill_every_layer(plan, bins.band_draws(band), bins.band_size(band), target, vectors, progress);
         finish_pending(target);

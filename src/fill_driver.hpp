@@ -19,8 +19,9 @@ namespace phongrast::detail {
 
 /// Overdraw::shade_visible's scratch for one band of rows.
 struct VisibleLayer {
-    FrameVector<std::uint32_t> owner;  ///< per sample of the band: its last triangle, or kNoOwner (huge pages)
-    std::vector<std::uint8_t> shown;   ///< per triangle of the band: owns at least one sample
+    /// Per sample of the band: the draw that claimed it (the last painter's
+    /// order draws there), or kNoOwner (FillTarget::owner; huge pages).
+    FrameVector<std::uint32_t> owner;
 };
 
 /// The fill's scratch, kept from frame to frame; per band, not per thread

@@ -251,18 +251,22 @@ PHONGRAST_FILL_INLINE void shade_span_lanes(const Real* q, const Real* dq, int c
     }
 }
 
-/// Shades a span in batches (shade_span_lanes()) and writes every sample.
+/// Shades a span in batches (shade_span_lanes()) and writes every sample,
+/// or, given `owners` (the span's owner row, nearest first), only those it
+/// has claimed: whose owner is `self`.
 template <typename Real, bool Perspective, typename ShadeLanes>
 PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count, glm::vec3* pixels,
-                                        std::uint64_t& replaced, ShadeLanes& shade_lanes) {
+                                        std::uint64_t& replaced, ShadeLanes& shade_lanes,
+                                        const std::uint32_t* owners = nullptr, std::uint32_t self = 0) {
     shade_span_lanes<Real, Perspective>(
         q, dq, count, shade_lanes,
         [&](int start, int n, const float (*channel)[kSampleBatch], bool nonfinite) PHONGRAST_INLINE_LAMBDA {
         glm::vec3* batch_pixels = pixels + start;
-        if (!nonfinite) {
+        if (!nonfinite && owners == nullptr) {
             for (int l = 0; l < n; ++l) batch_pixels[l] = glm::vec3(channel[0][l], channel[1][l], channel[2][l]);
         } else {
             for (int l = 0; l < n; ++l) {
+                if (owners != nullptr && owners[start + l] != self) continue;
                 batch_pixels[l] =
                     finite_or_replaced(glm::vec3(channel[0][l], channel[1][l], channel[2][l]), replaced);
             }
@@ -365,7 +369,7 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
         draw, target,
         [&](int row, int first_column, int count, const Real* q, const Real* dq) PHONGRAST_INLINE_LAMBDA {
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns);
-        const std::uint32_t* owners = owner_row(target, row);
+        std::uint32_t* owners = owner_row(target, row);
         target.covered += static_cast<std::uint64_t>(count);
         if (target.rank_keys != nullptr) {
             if constexpr (!std::is_same_v<std::decay_t<ShadeLanes>, NoLanes>) {
@@ -389,11 +393,22 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
                 target.samples += static_cast<std::uint64_t>(count);
                 return;
             }
+            if (owners != nullptr && count >= kMinLanesSpan) {
+                // The samples no nearer draw has claimed: a span hidden whole costs no shading.
+                std::uint32_t* span_owners = owners + first_column;
+                const int claimed = claim_span(span_owners, count, target.self);
+                if (claimed == 0) return;
+                glm::vec3* pixels = &image.pixels[row_start + static_cast<std::size_t>(first_column)];
+                fill_span_lanes<Real, Perspective>(q, dq, count, pixels, target.replaced, shade_lanes,
+                                                   claimed == count ? nullptr : span_owners, target.self);
+                target.samples += static_cast<std::uint64_t>(claimed);
+                return;
+            }
         }
         std::uint64_t written = 0;
         for (int k = 0; k < count; ++k) {
             // Painted over later: skipped. The weights below depend on k only, not on what was skipped.
-            if (owners != nullptr && owners[first_column + k] != target.self) continue;
+            if (owners != nullptr && !claims_sample(target, owners, first_column + k)) continue;
             Real w[3];
             const Real depth = sample_weights<Real, Perspective>(draw, q, dq, k, w);
             const std::size_t index = row_start + static_cast<std::size_t>(first_column + k);
@@ -485,12 +500,12 @@ PHONGRAST_FILL_INLINE void gather_sample_batches(const FillTriangle<Real>& draw,
         [&](int row, int first_column, int count, const Real* q, const Real* dq) PHONGRAST_INLINE_LAMBDA {
         const std::size_t row_start = static_cast<std::size_t>(row) * static_cast<std::size_t>(image.columns) +
                                       static_cast<std::size_t>(first_column);
-        const std::uint32_t* owners = owner_row(target, row);
+        std::uint32_t* owners = owner_row(target, row);
         if (owners != nullptr) owners += first_column;
         target.covered += static_cast<std::uint64_t>(count);
         for (int k = 0; k < count; ++k) {
             // Painted over later: skipped. A sample's weights depend on k only, not on the batch it joins.
-            if (owners != nullptr && owners[k] != target.self) continue;
+            if (owners != nullptr && !claims_sample(target, owners, k)) continue;
             const Real step_count = static_cast<Real>(k);
             w[0][n] = q[0] + dq[0] * step_count;
             w[1][n] = q[1] + dq[1] * step_count;

@@ -67,11 +67,13 @@ struct FillTarget {
     std::uint64_t samples;   ///< samples shaded and written
     std::uint64_t replaced;  ///< non-finite channels replaced by 0
     std::uint64_t covered = 0;  ///< samples inside the triangles filled, shaded or not
-    /// Overdraw::shade_visible: for each sample of rows [row_begin, row_end)
-    /// (row-major, image.columns wide), the number of the last triangle of
-    /// the band covering it; a kernel shades only the samples whose owner is
-    /// `self`. Null: shade every covered sample.
-    const std::uint32_t* owner = nullptr;
+    /// Overdraw::shade_visible: the draws come nearest first (painter's order
+    /// reversed), and for each sample of rows [row_begin, row_end) (row-major,
+    /// image.columns wide) this holds the number of the draw that claimed it,
+    /// or kNoOwner where none has yet. A kernel claims such a sample (writes
+    /// `self` there) and shades it, and skips the others: a draw painter's
+    /// order paints later has them. Null: shade every covered sample.
+    std::uint32_t* owner = nullptr;
     std::uint32_t self = 0;
     /// Painter's order by a test per sample instead of a sort (the fill in
     /// mesh order, set_up_and_fill()): per sample of the image, the painter's
@@ -97,30 +99,33 @@ struct FillTarget {
 /// No triangle covers the sample (Overdraw::shade_visible's owner buffer).
 constexpr std::uint32_t kNoOwner = 0xffffffffu;
 
-/// Pass one of Overdraw::shade_visible: writes `number` as the owner of every
-/// sample the triangle covers in the target's rows, so that after the band's
-/// triangles have gone through in painter's order each sample names the one
-/// that paints it last. Returns the number of samples covered.
+/// The owner row of `row` when the target shades only the samples it claims, else null.
 template <typename Real>
-std::uint64_t record_owner(const FillTriangle<Real>& draw, const FillTarget<Real>& target, std::uint32_t number,
-                           std::uint32_t* owner) {
-    std::uint64_t covered = 0;
-    const std::size_t columns = static_cast<std::size_t>(target.image.columns);
-    for_each_covered_span(draw.coverage, target.row_begin, target.row_end,
-                          [&](int row, int first_column, int count, const std::int64_t*, const std::int64_t*) {
-        std::uint32_t* start = owner + static_cast<std::size_t>(row - target.row_begin) * columns +
-                               static_cast<std::size_t>(first_column);
-        std::fill(start, start + count, number);
-        covered += static_cast<std::uint64_t>(count);
-    });
-    return covered;
-}
-
-/// The owner row of `row` when the target shades only its own samples, else null.
-template <typename Real>
-const std::uint32_t* owner_row(const FillTarget<Real>& target, int row) {
+std::uint32_t* owner_row(const FillTarget<Real>& target, int row) {
     if (target.owner == nullptr) return nullptr;
     return target.owner + static_cast<std::size_t>(row - target.row_begin) * static_cast<std::size_t>(target.image.columns);
+}
+
+/// Whether the target's draw shades sample k of an owner row (owner_row(),
+/// not null): when no draw nearer has claimed it, in which case it claims it.
+template <typename Real>
+inline bool claims_sample(const FillTarget<Real>& target, std::uint32_t* owners, int k) {
+    if (owners[k] != kNoOwner) return false;
+    owners[k] = target.self;
+    return true;
+}
+
+/// Claims the span's `count` samples no draw has claimed yet for `self`
+/// (owners starts at the span's first sample) and returns how many it
+/// claimed. One pass without branches, so that it vectorises.
+inline int claim_span(std::uint32_t* owners, int count, std::uint32_t self) {
+    int claimed = 0;
+    for (int k = 0; k < count; ++k) {
+        const bool free = owners[k] == kNoOwner;
+        owners[k] = free ? self : owners[k];
+        claimed += int(free);
+    }
+    return claimed;
 }
 
 /// A material's texture as the kernels read it (a view of its TextureImage).

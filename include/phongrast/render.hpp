@@ -62,10 +62,10 @@ enum class Visibility {
 /// painter's order only.
 enum class Overdraw {
     shade_all,      ///< the classic painter's fill: every triangle shades every sample it covers
-    shade_visible,  ///< per band of rows, first record which triangle paints each sample last
-                    ///< (coverage only), then shade just those samples: one shading per sample
-                    ///< for a second coverage pass
-    automatic,      ///< shade_visible where shading costs more than that second pass (Phong
+    shade_visible,  ///< per band of rows, the triangles in reverse painter's order, each
+                    ///< shading only the samples no triangle before it covered: one shading
+                    ///< per sample for a test per covered sample
+    automatic,      ///< shade_visible where shading costs more than that test (Phong
                     ///< with diffuse or specular light, and every shader on a textured
                     ///< scene: measured in docs/performance.md), shade_all elsewhere
 };
