@@ -408,7 +408,7 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
         std::uint64_t written = 0;
         for (int k = 0; k < count; ++k) {
             // Painted over later: skipped. The weights below depend on k only, not on what was skipped.
-            if (owners != nullptr && !claims_sample(target, owners, first_column + k)) continue;
+            if (owners != nullptr && !claims_sample(owners, first_column + k, target.self)) continue;
             Real w[3];
             const Real depth = sample_weights<Real, Perspective>(draw, q, dq, k, w);
             const std::size_t index = row_start + static_cast<std::size_t>(first_column + k);
@@ -505,7 +505,7 @@ PHONGRAST_FILL_INLINE void gather_sample_batches(const FillTriangle<Real>& draw,
         target.covered += static_cast<std::uint64_t>(count);
         for (int k = 0; k < count; ++k) {
             // Painted over later: skipped. A sample's weights depend on k only, not on the batch it joins.
-            if (owners != nullptr && !claims_sample(target, owners, k)) continue;
+            if (owners != nullptr && !claims_sample(owners, k, target.self)) continue;
             const Real step_count = static_cast<Real>(k);
             w[0][n] = q[0] + dq[0] * step_count;
             w[1][n] = q[1] + dq[1] * step_count;

@@ -106,12 +106,11 @@ std::uint32_t* owner_row(const FillTarget<Real>& target, int row) {
     return target.owner + static_cast<std::size_t>(row - target.row_begin) * static_cast<std::size_t>(target.image.columns);
 }
 
-/// Whether the target's draw shades sample k of an owner row (owner_row(),
-/// not null): when no draw nearer has claimed it, in which case it claims it.
-template <typename Real>
-inline bool claims_sample(const FillTarget<Real>& target, std::uint32_t* owners, int k) {
+/// Whether draw `self` shades sample k of an owner row (owner_row(), not
+/// null): when no nearer draw has claimed it, in which case it claims it.
+inline bool claims_sample(std::uint32_t* owners, int k, std::uint32_t self) {
     if (owners[k] != kNoOwner) return false;
-    owners[k] = target.self;
+    owners[k] = self;
     return true;
 }
 
