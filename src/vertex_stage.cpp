@@ -1,5 +1,6 @@
 #include "vertex_stage.hpp"
 
+#include "camera_lanes.hpp"
 #include "fill_types.hpp"
 #include "normalize_lanes.hpp"
 #include "prefetch.hpp"
@@ -30,20 +31,23 @@ constexpr std::size_t kLightingBlock = 1024;
 /// here, 1.1-1.2x: docs/performance.md, "Mesh order"). 48 bytes each on the stack.
 constexpr std::size_t kGatherLanes = 256;
 
+/// Vertices transformed together (CameraLanes: 40 bytes each on the stack).
+constexpr std::size_t kTransformLanes = 128;
+
 /// The unit camera-space normals of vertices first .. first + n - 1, whose
 /// world normals are normals[0 .. n-1], into their varyings.
 template <typename Real>
 void camera_normals(const CameraFrame& frame, const glm::vec3* normals, std::size_t first, std::size_t n,
                     FrameVector<Varyings<Real>>& varyings) {
-    constexpr std::size_t kLanes = 256;
-    Real x[kLanes], y[kLanes], z[kLanes];
-    for (std::size_t done = 0; done < n; done += kLanes) {
-        const std::size_t lanes = std::min(kLanes, n - done);
+    double camera_x[kTransformLanes], camera_y[kTransformLanes], camera_z[kTransformLanes];
+    Real x[kTransformLanes], y[kTransformLanes], z[kTransformLanes];
+    for (std::size_t done = 0; done < n; done += kTransformLanes) {
+        const std::size_t lanes = std::min(kTransformLanes, n - done);
+        camera_from_world_direction_lanes(frame, normals + done, lanes, {camera_x, camera_y, camera_z});
         for (std::size_t k = 0; k < lanes; ++k) {
-            const Vec3<Real> normal(frame.camera_from_world_direction(glm::dvec3(normals[done + k])));
-            x[k] = normal.x;
-            y[k] = normal.y;
-            z[k] = normal.z;
+            x[k] = static_cast<Real>(camera_x[k]);
+            y[k] = static_cast<Real>(camera_y[k]);
+            z[k] = static_cast<Real>(camera_z[k]);
         }
         safe_normalize_lanes(lanes, x, y, z);
         for (std::size_t k = 0; k < lanes; ++k) varyings[first + done + k].normal = Vec3<Real>(x[k], y[k], z[k]);
@@ -56,21 +60,24 @@ template <typename Real>
 void transform_span(const glm::dvec3* positions, const glm::vec3* colors, const glm::vec3* normals,
                     std::size_t first, std::size_t n, const View& view, TransformedVertices<Real>& out) {
     const CameraFrame& frame = view.frame;
-    for (std::size_t k = 0; k < n; ++k) {
-        const glm::dvec3 camera = frame.camera_from_world(positions[k]);
-        ScreenVertex& screen = out.screen[first + k];
-        screen.depth = camera.z;
-        if (camera.z > 0.0) {
-            const glm::dvec2 sample = view.sample_from_camera(camera);
-            screen.column = sample.x;
-            screen.row = sample.y;
-        } else {
-            screen.column = screen.row = std::numeric_limits<double>::quiet_NaN();
+    double x[kTransformLanes], y[kTransformLanes], z[kTransformLanes], column[kTransformLanes], row[kTransformLanes];
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t done = 0; done < n; done += kTransformLanes) {
+        const std::size_t lanes = std::min(kTransformLanes, n - done);
+        camera_from_world_lanes(frame, positions + done, lanes, {x, y, z});
+        sample_from_camera_lanes(frame, view.sample_offset, lanes, x, y, z, column, row);
+        for (std::size_t k = 0; k < lanes; ++k) {
+            ScreenVertex& screen = out.screen[first + done + k];
+            screen.depth = z[k];
+            // Behind the eye (or at it) a vertex has no sample position.
+            const bool in_front = z[k] > 0.0;
+            screen.column = in_front ? column[k] : kNaN;
+            screen.row = in_front ? row[k] : kNaN;
+            Varyings<Real>& v = out.varyings[first + done + k];
+            v.position = Vec3<Real>(static_cast<Real>(x[k]), static_cast<Real>(y[k]), static_cast<Real>(z[k]));
+            v.color = colors == nullptr ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[done + k]);
+            v.lit = Vec3<Real>(Real(0));
         }
-        Varyings<Real>& v = out.varyings[first + k];
-        v.position = Vec3<Real>(camera);
-        v.color = colors == nullptr ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[k]);
-        v.lit = Vec3<Real>(Real(0));
     }
     if (normals != nullptr) {
         camera_normals(frame, normals, first, n, out.varyings);
