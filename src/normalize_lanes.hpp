@@ -7,7 +7,10 @@
 #include <cstddef>
 #include <limits>
 
+#include "lanes_isa.hpp"
+
 namespace phongrast::detail {
+inline namespace PHONGRAST_LANES_ISA {
 
 /// safe_normalize() of n vectors at once, written so that the compiler
 /// vectorises it: the same operations in the same order, lane by lane, so
@@ -28,6 +31,7 @@ void safe_normalize_lanes(std::size_t n, Real* x, Real* y, Real* z) {
     }
 }
 
+}  // namespace PHONGRAST_LANES_ISA
 }  // namespace phongrast::detail
 
 #endif  // PHONGRAST_SRC_NORMALIZE_LANES_HPP

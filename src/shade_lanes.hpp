@@ -15,10 +15,12 @@
 #include <cstddef>
 #include <cstring>
 
+#include "lanes_isa.hpp"
 #include "normalize_lanes.hpp"
 #include "shading.hpp"
 
 namespace phongrast::detail {
+inline namespace PHONGRAST_LANES_ISA {
 
 /// Three coordinates of N points, one array per axis.
 template <typename Real, std::size_t N>
@@ -172,6 +174,7 @@ void shade_with_lanes(const PointShader<Real>& shader, const ShadeLanesInput<Rea
 /// the stack); with more, the callers light point by point.
 constexpr std::size_t kMaxLaneLights = 8;
 
+}  // namespace PHONGRAST_LANES_ISA
 }  // namespace phongrast::detail
 
 #endif  // PHONGRAST_SRC_SHADE_LANES_HPP

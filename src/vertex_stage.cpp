@@ -1,11 +1,13 @@
 #include "vertex_stage.hpp"
 
 #include "camera_lanes.hpp"
+#include "fill_dispatch.hpp"
 #include "fill_types.hpp"
 #include "normalize_lanes.hpp"
 #include "prefetch.hpp"
 #include "resize_polling.hpp"
 #include "shade_lanes.hpp"
+#include "vertex_lighting_lanes.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -214,53 +216,6 @@ void build_light_rig(const Scene& scene, const PhongMaterial& material, const Ca
     }
 }
 
-namespace {
-
-/// Vertices lit together.
-constexpr std::size_t kLightingLanes = 64;
-
-/// Specialised lighting of vertices [begin, end), kLightingLanes at a time:
-/// the vectors to every active light and to the eye by light_vectors_lanes(),
-/// then the vertices are shaded by shade_with_lanes()
-/// (one material) or vertex by vertex (materials per vertex): what
-/// PointShader computes vertex by vertex, bit for bit. A last, partial group
-/// fills its other lanes with copies of its first vertex.
-template <typename Real>
-void light_vertex_lanes(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
-                        FrameVector<Varyings<Real>>& varyings, std::size_t begin, std::size_t end,
-                        LightVectorsAt<Real>& vectors) {
-    const std::vector<CameraLight<Real>>& lights = shader.rig->active_lights;
-    AxisLanes<Real, kLightingLanes> lanes[kMaxLaneLights + 1];
-    AxisLanes<Real, kLightingLanes>& to_eye = lanes[lights.size()];
-    ShadeLanesInput<Real, kLightingLanes> in;
-    in.to_light = lanes;
-    in.to_eye = &to_eye;
-    AxisLanes<Real, kLightingLanes> lit;
-    vectors.to_light.resize(lights.size());
-    for (std::size_t first = begin; first < end; first += kLightingLanes) {
-        const std::size_t n = std::min(kLightingLanes, end - first);
-        const auto vertex = [&](std::size_t lane) -> Varyings<Real>& { return varyings[first + (lane < n ? lane : 0)]; };
-        light_vectors_lanes(
-            shader, [&](std::size_t lane) -> const Vec3<Real>& { return vertex(lane).position; }, lanes);
-        if (materials.vertex_surfaces == nullptr) {
-            for (std::size_t i = 0; i < kLightingLanes; ++i) {
-                in.normal.set(i, vertex(i).normal);
-                in.color.set(i, vertex(i).color);
-            }
-            shade_with_lanes(shader, in, lit);
-            for (std::size_t i = 0; i < n; ++i) varyings[first + i].lit = lit.get(i);
-            continue;
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            for (std::size_t k = 0; k < lights.size(); ++k) vectors.to_light[k] = lanes[k].get(i);
-            if (shader.effects.specular) vectors.to_eye = to_eye.get(i);
-            Varyings<Real>& v = varyings[first + i];
-            v.lit = materials.shader_of(shader, first + i).shade_with(vectors, v.normal, v.color);
-        }
-    }
-}
-
-}  // namespace
 
 template <typename Real>
 void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
@@ -268,6 +223,11 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
     const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
     if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
     const bool lanes = shader.specialized && shader.effects.normals && shader.rig->active_lights.size() <= kMaxLaneLights;
+#if PHONGRAST_HAVE_AVX2_KERNELS
+    // The fill's instruction set (fill_dispatch.hpp), so one choice, or one
+    // override in the tests and benchmarks, covers both.
+    const bool avx2 = kernel_isa() == KernelIsa::avx2;
+#endif
     // Scratch per block, not per thread: which worker runs which block changes
     // from frame to frame, and per-thread scratch would then allocate.
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
@@ -275,6 +235,12 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
         const std::size_t begin = block * kLightingBlock;
         const std::size_t end = std::min(varyings.size(), (block + 1) * kLightingBlock);
         if (lanes) {
+#if PHONGRAST_HAVE_AVX2_KERNELS
+            if (avx2) {
+                light_vertex_lanes_avx2(shader, materials, varyings, begin, end, vectors);
+                return;
+            }
+#endif
             light_vertex_lanes(shader, materials, varyings, begin, end, vectors);
             return;
         }
