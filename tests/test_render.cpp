@@ -287,6 +287,16 @@ TEST_CASE("invalid scenes are rejected with the field named") {
         scene.mesh.positions[299999].x = std::numeric_limits<double>::infinity();
         scene.mesh.positions[131072].z = std::numeric_limits<double>::quiet_NaN();
         CHECK_THROWS_WITH(render(scene), Catch::Contains("position of vertex 131072 is not finite"));
+        scene.mesh.positions.assign(300000, p);
+        scene.mesh.colors.assign(300000, {1, 1, 1});
+        scene.mesh.triangles.assign(300000, {0, 1, 2});
+        scene.mesh.normals.assign(300000, {0, 0, 1});
+        scene.mesh.normals[200000].y = std::numeric_limits<float>::quiet_NaN();
+        scene.mesh.normals[150000].x = -std::numeric_limits<float>::infinity();
+        CHECK_THROWS_WITH(render(scene), Catch::Contains("mesh.normals[150000]"));
+        scene.mesh.normals[150000].x = 0.0f;
+        scene.mesh.normals[200000].y = 0.0f;
+        CHECK_NOTHROW(render(scene));  // every block valid: no block reports its end as a bad element
     }
     SECTION("negative exponent") {
         scene.material.n = -1;
