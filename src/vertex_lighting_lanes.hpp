@@ -1,6 +1,6 @@
 // Exact Gouraud's vertices lit in lanes (internal header), compiled once per
-// instruction set (lanes_isa.hpp): by vertex_stage.cpp for the baseline and
-// by vertex_lighting_avx2.cpp for AVX2, which vertex_stage.cpp picks on CPUs
+// instruction set (lanes_isa.hpp): by lighting_dispatch.cpp for the baseline
+// and by lighting_avx2.cpp for AVX2, which lighting_dispatch.cpp picks on CPUs
 // that have it (the same operations, no FMA: the same bits, test_kernel_isa).
 #ifndef PHONGRAST_SRC_VERTEX_LIGHTING_LANES_HPP
 #define PHONGRAST_SRC_VERTEX_LIGHTING_LANES_HPP
@@ -61,8 +61,15 @@ void light_vertex_lanes(const PointShader<Real>& shader, const VertexMaterials<R
 
 }  // namespace PHONGRAST_LANES_ISA
 
+/// light_vertex_lanes() compiled for the instruction set kernel_isa() names,
+/// the fill's (lighting_dispatch.cpp).
+template <typename Real>
+void light_vertex_lanes_dispatched(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
+                                   FrameVector<Varyings<Real>>& varyings, std::size_t begin, std::size_t end,
+                                   LightVectorsAt<Real>& vectors);
+
 #if PHONGRAST_HAVE_AVX2_KERNELS
-/// light_vertex_lanes() compiled for AVX2 (vertex_lighting_avx2.cpp); call
+/// light_vertex_lanes() compiled for AVX2 (lighting_avx2.cpp); call
 /// only when kernel_isa() is KernelIsa::avx2.
 template <typename Real>
 void light_vertex_lanes_avx2(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,

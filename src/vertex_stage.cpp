@@ -1,7 +1,6 @@
 #include "vertex_stage.hpp"
 
 #include "camera_lanes.hpp"
-#include "fill_dispatch.hpp"
 #include "fill_types.hpp"
 #include "normalize_lanes.hpp"
 #include "prefetch.hpp"
@@ -223,11 +222,6 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
     const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
     if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
     const bool lanes = shader.specialized && shader.effects.normals && shader.rig->active_lights.size() <= kMaxLaneLights;
-#if PHONGRAST_HAVE_AVX2_KERNELS
-    // The fill's instruction set (fill_dispatch.hpp), so one choice, or one
-    // override in the tests and benchmarks, covers both.
-    const bool avx2 = kernel_isa() == KernelIsa::avx2;
-#endif
     // Scratch per block, not per thread: which worker runs which block changes
     // from frame to frame, and per-thread scratch would then allocate.
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
@@ -235,13 +229,7 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
         const std::size_t begin = block * kLightingBlock;
         const std::size_t end = std::min(varyings.size(), (block + 1) * kLightingBlock);
         if (lanes) {
-#if PHONGRAST_HAVE_AVX2_KERNELS
-            if (avx2) {
-                light_vertex_lanes_avx2(shader, materials, varyings, begin, end, vectors);
-                return;
-            }
-#endif
-            light_vertex_lanes(shader, materials, varyings, begin, end, vectors);
+            light_vertex_lanes_dispatched(shader, materials, varyings, begin, end, vectors);
             return;
         }
         for (std::size_t i = begin; i != end; ++i) {

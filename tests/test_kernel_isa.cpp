@@ -1,7 +1,8 @@
-// The fill kernels and exact Gouraud's vertex lighting compiled for AVX2
-// (src/fill_kernels_avx2.hpp, src/vertex_lighting_avx2.cpp) against the
-// baseline ones: the same image bit for bit in every shader, mode, precision
-// and effect set, untextured and textured, so the picture does not depend on the CPU.
+// The fill kernels and the lighting lanes (exact Gouraud's vertices, the
+// seed's corners) compiled for AVX2 (src/fill_kernels_avx2.hpp,
+// src/lighting_avx2.cpp) against the baseline ones: the same image bit for
+// bit in every shader, mode, precision and effect set, untextured and
+// textured, so the picture does not depend on the CPU.
 #include <cstdint>
 #include <memory>
 #include <random>
