@@ -215,7 +215,6 @@ void build_light_rig(const Scene& scene, const PhongMaterial& material, const Ca
     }
 }
 
-
 template <typename Real>
 void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
                     FrameVector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory) {
