@@ -7,7 +7,7 @@
 // but the camera's model is chosen once per call and the lanes are
 // independent, so the compiler vectorises them and the divisions of
 // different points overlap. One point per call waited on its divisions
-// (docs/performance.md, "Where the time goes now").
+// (docs/performance.md, "Vertices, lighting and normals per frame").
 
 #include <phongrast/camera.hpp>
 

@@ -3,6 +3,7 @@
 // (and View::sample_from_camera), or pictures would change by a rounding.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <string>
