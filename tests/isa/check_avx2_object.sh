@@ -1,6 +1,7 @@
 #!/bin/sh
-# Checks the object files of src/fill_kernels_avx2_*.cpp: their kernels
-# (namespace phongrast::detail::avx2) use 256-bit AVX registers, and no other
+# Checks the object files of src/fill_kernels_avx2_*.cpp and
+# src/lighting_avx2.cpp: their kernels and lighting lanes (namespace
+# phongrast::detail::avx2) use 256-bit AVX registers, and no other
 # function in them (the inline functions and templates of the headers they
 # include, which the linker may pick over other objects' copies) uses a
 # VEX-encoded (AVX) instruction, so code that runs on any x86-64 never lands
