@@ -21,6 +21,8 @@
 #include "fill_dispatch.hpp"
 // Internal: detail::set_mesh_order_walk_choice, for --walk and --walk-against-sorted.
 #include "fill_driver.hpp"
+// Internal: detail::use_coverage_screen, for --screen-against-none.
+#include "coverage_screen.hpp"
 #include "phongrast/render.hpp"
 // Internal: detail::record_stage_times, for --stages.
 #include "stage_table.hpp"
@@ -102,11 +104,44 @@ void time_walk_against_sorted(const phongrast::Scene& scene, const phongrast::Re
                 walked_passes > 0 ? "yes" : "no (sorted both)", same ? "yes" : "NO");
 }
 
+/// --screen-against-none: set-up with the coverage screen (coverage_screen.hpp)
+/// against set-up of every triangle, timed in one process in interleaved
+/// rounds; prints a Markdown row: medians in ms, their ratio, whether the
+/// images and the triangle counts are the same.
+void time_screen_against_none(const phongrast::Scene& scene, const phongrast::RenderOptions& options, int repeat,
+                              int warmup, const std::string& label) {
+    phongrast::Renderer screening(options), plain(options);
+    phongrast::RenderResult screened, unscreened;
+    const std::vector<std::function<double()>> contenders = {
+        [&] { return support::time_ms([&] { screened = screening.render(scene); }); },
+        [&] {
+            const bool was = phongrast::detail::use_coverage_screen(false);
+            const double ms = support::time_ms([&] { unscreened = plain.render(scene); });
+            phongrast::detail::use_coverage_screen(was);
+            return ms;
+        }};
+    const std::vector<double> median = support::interleaved_medians(repeat, warmup, contenders);
+    const phongrast::Image& a = screened.image;
+    const phongrast::Image& b = unscreened.image;
+    const bool same = a.pixels.size() == b.pixels.size() &&
+                      std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
+    const phongrast::RenderStats& x = screened.stats;
+    const phongrast::RenderStats& y = unscreened.stats;
+    const bool same_counts = x.triangles_drawn == y.triangles_drawn &&
+                             x.triangles_between_samples == y.triangles_between_samples &&
+                             x.triangles_degenerate == y.triangles_degenerate && x.samples_shaded == y.samples_shaded;
+    std::printf("| %s | %.3f | %.3f | %.3f | %.1f%% | %s |\n", label.c_str(), median[0], median[1],
+                median[0] / median[1],
+                100.0 * double(x.triangles_between_samples + x.triangles_degenerate) /
+                    double(std::max<std::size_t>(1, scene.mesh.triangles.size())),
+                same && same_counts ? "yes" : "NO");
+}
+
 struct Settings {
     std::string name = "icosphere-9.7k", shader = "phong", mode = "exact", precision = "float";
     std::string overdraw = "auto", isa = "best", lighting, dump, walk = "auto";
     int rows = 0, threads = 1, repeat = 5, warmup = 1;
-    bool steps = false, walk_against_sorted = false, stages = false;
+    bool steps = false, walk_against_sorted = false, screen_against_none = false, stages = false;
 };
 
 phongrast::RenderOptions options_for(const Settings& s) {
@@ -153,11 +188,13 @@ void time_renders(const Settings& s, const support::NamedScene& named, const pho
                     phongrast_bench::stage_medians_line(phongrast::detail::take_stage_times(), support::median(ms)).c_str());
     }
     std::printf("%s %dx%d %s %s threads=%d: median %.3f ms, min %.3f, max %.3f (%d renders); "
-                "%llu triangles drawn, %llu samples; peak RSS %.1f MiB (%.1f MiB before rendering)\n",
+                "%llu triangles drawn (%llu between samples, %llu degenerate), %llu samples; peak RSS %.1f MiB (%.1f MiB before rendering)\n",
                 s.name.c_str(), named.scene.image.columns, named.scene.image.rows, s.shader.c_str(), s.mode.c_str(),
                 s.threads, support::median(ms), *std::min_element(ms.begin(), ms.end()),
                 *std::max_element(ms.begin(), ms.end()), s.repeat,
                 static_cast<unsigned long long>(result.stats.triangles_drawn),
+                static_cast<unsigned long long>(result.stats.triangles_between_samples),
+                static_cast<unsigned long long>(result.stats.triangles_degenerate),
                 static_cast<unsigned long long>(result.stats.samples_shaded),
                 double(support::peak_resident_bytes()) / (1 << 20), rss_scene);
 }
@@ -189,6 +226,10 @@ int main(int argc, char** argv) {
     app.add_flag("--walk-against-sorted", s.walk_against_sorted,
                  "time the fill in mesh order against the sorted fill in interleaved rounds in this process; print a "
                  "Markdown row: medians in ms, walk / sorted, whether it walked, same image");
+    app.add_flag("--screen-against-none", s.screen_against_none,
+                 "time set-up with the coverage screen against set-up of every triangle in interleaved rounds in "
+                 "this process; print a Markdown row: medians in ms, screened / not, triangles that cover no sample, "
+                 "same image and counts");
     app.add_flag("--stages", s.stages,
                  "also print the median time of each stage of the render pass (vertices, set-up, painter's order, "
                  "binning, fill, walks, ...) and the rest of the frame");
@@ -210,6 +251,9 @@ int main(int argc, char** argv) {
         }
         if (s.walk_against_sorted) {
             time_walk_against_sorted(named.scene, options, s.repeat, s.warmup,
+                                     s.name + " | " + s.shader + " | " + s.mode + " | " + std::to_string(s.threads));
+        } else if (s.screen_against_none) {
+            time_screen_against_none(named.scene, options, s.repeat, s.warmup,
                                      s.name + " | " + s.shader + " | " + s.mode + " | " + std::to_string(s.threads));
         } else if (s.steps) {
             time_steps(named.scene, options, s.repeat, s.warmup,

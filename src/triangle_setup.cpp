@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include <tbb/parallel_for.h>
 
 #include "back_faces.hpp"
 #include "clipping.hpp"
+#include "coverage_screen.hpp"
 #include "painter_order.hpp"
 #include "prefetch.hpp"
 #include "raster.hpp"
@@ -121,6 +123,14 @@ public:
             }
         }
         count(outcome);
+    }
+
+    /// Whether the coverage screen (coverage_screen.hpp) may decide for
+    /// run(): it repeats run()'s tests but culling's.
+    bool screens() const { return in_.cull == HiddenBackFaces::unknown && coverage_screen_in_use(); }
+    /// Counts a triangle the screen decided as run() would have counted it.
+    void count_screened(ScreenVerdict verdict) {
+        ++(verdict == ScreenVerdict::degenerate ? counts_.degenerate : counts_.between_samples);
     }
 
 private:
@@ -448,6 +458,58 @@ void add_counts(const SetupCounts& counts, RenderStats& stats) {
 
 }  // namespace
 
+/// What the coverage screen reads of set-up's input.
+template <typename Real>
+CoverageScreenInput coverage_screen_input(const SetupInput<Real>& input) {
+    CoverageScreenInput screen;
+    screen.triangles = input.scene.mesh.triangles.data();
+    screen.screen = input.vertices.screen.data();
+    screen.column_offset = input.view.sample_offset.x;
+    screen.row_offset = input.view.sample_offset.y;
+    screen.columns = input.view.frame.columns;
+    screen.rows = input.view.frame.rows;
+    screen.min_depth = std::max(input.view.near_depth, std::numeric_limits<double>::denorm_min());
+    screen.max_depth = kMaxDrawableDepth<Real>;
+    return screen;
+}
+
+/// The coverage screen's verdicts on a chunk's triangles, a block at a time
+/// as they are asked for. Where it decides few (a mesh of triangles larger
+/// than a sample, which set-up keeps), screening would cost more than it
+/// saves: after such a block the next kRestBlocks blocks are left to set-up.
+class ScreenedBlock {
+public:
+    /// A block pays when it decides at least this share of its triangles.
+    static constexpr std::size_t kWorthShare = 4;  // 1 in 4
+    static constexpr std::size_t kRestBlocks = 8;
+
+    ScreenedBlock(const CoverageScreenInput& input, std::size_t end) : input_(input), end_(end) {}
+    ScreenVerdict verdict(std::size_t t) {
+        if (t >= block_end_ || t < block_begin_) screen_from(t);
+        return verdicts_[t - block_begin_];
+    }
+
+private:
+    void screen_from(std::size_t t) {
+        block_begin_ = t;
+        block_end_ = std::min(end_, t + kScreenBlock);
+        if (t < resume_at_) {
+            std::fill(verdicts_, verdicts_ + (block_end_ - block_begin_), ScreenVerdict::set_up);
+            return;
+        }
+        screen_coverage_dispatched(input_, block_begin_, block_end_, verdicts_);
+        const std::size_t decided = static_cast<std::size_t>(std::count_if(
+            verdicts_, verdicts_ + (block_end_ - block_begin_), [](ScreenVerdict v) { return v != ScreenVerdict::set_up; }));
+        if (decided * kWorthShare < block_end_ - block_begin_) resume_at_ = block_end_ + kRestBlocks * kScreenBlock;
+    }
+
+    const CoverageScreenInput& input_;
+    std::size_t end_;
+    std::size_t block_begin_ = 0, block_end_ = 0;
+    std::size_t resume_at_ = 0;  ///< no screening before this triangle
+    ScreenVerdict verdicts_[kScreenBlock];
+};
+
 template <typename Real>
 void set_up_triangle(const SetupInput<Real>& input, std::uint32_t source, ChunkVector<FillTriangle<Real>>& out,
                      ClipVertexStore<Real>& clip_vertices, SetupCounts& counts, LightVectorsAt<Real>& vectors) {
@@ -488,6 +550,7 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
     draws.chunks = chunks;
     const FrameVector<ScreenVertex>& screen = input.vertices.screen;
     const bool mapped = draws.arena.mapped();  // huge pages: no 4 KiB map-ahead
+    const CoverageScreenInput screen_input = coverage_screen_input(input);
     progress.begin_stage(0.1, 0.35, chunks);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
         if (progress.cancelled()) return;
@@ -524,7 +587,16 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
         SeedCornerBatch<Real> seed_batch;
         setup.batch_seed_corners(seed_batch);
         RecordPages<FillTriangle<Real>> pages(draws.chunk_mapped[chunk]);
+        const bool screened = setup.screens();
+        ScreenedBlock screening(screen_input, end);
         for (std::size_t t = begin; t < end; ++t) {
+            if (screened) {
+                const ScreenVerdict verdict = screening.verdict(t);
+                if (verdict != ScreenVerdict::set_up) {
+                    setup.count_screened(verdict);
+                    continue;
+                }
+            }
             if (!mapped) pages.map_ahead(out, end - t);
             const std::size_t first = out.size();
             setup.run(static_cast<std::uint32_t>(t));
@@ -664,8 +736,11 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
         out.clear();
         clip_vertices.clear();
     };
+    const CoverageScreenInput screen_input = coverage_screen_input(input);
+    const bool screened = owned_setup.screens();
     for (std::size_t chunk = 0; chunk < chunks && !progress.cancelled(); ++chunk) {
         const std::size_t end = std::min(triangles.size(), (chunk + 1) * kSetupChunk);
+        ScreenedBlock screening(screen_input, end);
         for (std::size_t t = chunk * kSetupChunk; t < end; ++t) {
             const Triangle& tri = triangles[t];
             bool owned = true;
@@ -700,6 +775,13 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
                 const bool reaches_here = whole_image || (corner.row >= reach_begin && corner.row <= reach_end);
                 if (fill.reads_varyings && reaches_here) {
                     for (std::uint32_t vertex : ahead) prefetch_object(&varyings[vertex]);
+                }
+            }
+            if (screened) {
+                const ScreenVerdict verdict = screening.verdict(t);
+                if (verdict != ScreenVerdict::set_up) {
+                    if (owned) owned_setup.count_screened(verdict);
+                    continue;
                 }
             }
             if (!batched) {

@@ -1,6 +1,7 @@
 #!/bin/sh
-# Checks the object files of src/fill_kernels_avx2_*.cpp and
-# src/lighting_avx2.cpp: their kernels and lighting lanes (namespace
+# Checks the object files of src/fill_kernels_avx2_*.cpp,
+# src/lighting_avx2.cpp and src/coverage_screen_avx2.cpp: their kernels,
+# lighting lanes and screen (namespace
 # phongrast::detail::avx2) use 256-bit AVX registers, and no other
 # function in them (the inline functions and templates of the headers they
 # include, which the linker may pick over other objects' copies) uses a
