@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <time.h>
+
 #include <CLI/CLI.hpp>
 
 // Internal: detail::override_kernel_isa, to time the instruction sets in one process.
@@ -108,30 +110,52 @@ void time_walk_against_sorted(const phongrast::Scene& scene, const phongrast::Re
 /// against set-up of every triangle, timed in one process in interleaved
 /// rounds; prints a Markdown row: medians in ms, their ratio, whether the
 /// images and the triangle counts are the same.
+/// The process's CPU time in milliseconds (every thread's): unlike wall
+/// time, not counting what the VM's host takes from it.
+double process_cpu_ms() {
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
+}
+
+/// --screen-against-none: set-up with the coverage screen (coverage_screen.hpp)
+/// against set-up of every triangle, timed in one process in rounds that
+/// alternate which goes first (after a render of a large mesh the next one
+/// starts with the other's memory in the caches); prints a Markdown row:
+/// wall and CPU-time medians in ms and their ratios, the share of triangles
+/// that cover no sample, whether the images and the triangle counts are the same.
 void time_screen_against_none(const phongrast::Scene& scene, const phongrast::RenderOptions& options, int repeat,
                               int warmup, const std::string& label) {
-    phongrast::Renderer screening(options), plain(options);
-    phongrast::RenderResult screened, unscreened;
-    const std::vector<std::function<double()>> contenders = {
-        [&] { return support::time_ms([&] { screened = screening.render(scene); }); },
-        [&] {
-            const bool was = phongrast::detail::use_coverage_screen(false);
-            const double ms = support::time_ms([&] { unscreened = plain.render(scene); });
+    phongrast::Renderer renderers[2] = {phongrast::Renderer(options), phongrast::Renderer(options)};
+    phongrast::RenderResult results[2];
+    std::vector<double> wall[2], cpu[2];
+    for (int round = 0; round < warmup + repeat; ++round) {
+        for (int k = 0; k < 2; ++k) {
+            const int which = (round % 2 == 0) ? k : 1 - k;  // 0: screened, 1: not
+            const bool was = phongrast::detail::use_coverage_screen(which == 0);
+            const double cpu_start = process_cpu_ms();
+            const double ms = support::time_ms([&] { results[which] = renderers[which].render(scene); });
+            const double cpu_ms = process_cpu_ms() - cpu_start;
             phongrast::detail::use_coverage_screen(was);
-            return ms;
-        }};
-    const std::vector<double> median = support::interleaved_medians(repeat, warmup, contenders);
-    const phongrast::Image& a = screened.image;
-    const phongrast::Image& b = unscreened.image;
+            if (round < warmup) continue;
+            wall[which].push_back(ms);
+            cpu[which].push_back(cpu_ms);
+        }
+    }
+    const double wall_median[2] = {support::median(wall[0]), support::median(wall[1])};
+    const double cpu_median[2] = {support::median(cpu[0]), support::median(cpu[1])};
+    const phongrast::Image& a = results[0].image;
+    const phongrast::Image& b = results[1].image;
     const bool same = a.pixels.size() == b.pixels.size() &&
                       std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)) == 0;
-    const phongrast::RenderStats& x = screened.stats;
-    const phongrast::RenderStats& y = unscreened.stats;
+    const phongrast::RenderStats& x = results[0].stats;
+    const phongrast::RenderStats& y = results[1].stats;
     const bool same_counts = x.triangles_drawn == y.triangles_drawn &&
                              x.triangles_between_samples == y.triangles_between_samples &&
                              x.triangles_degenerate == y.triangles_degenerate && x.samples_shaded == y.samples_shaded;
-    std::printf("| %s | %.3f | %.3f | %.3f | %.1f%% | %s |\n", label.c_str(), median[0], median[1],
-                median[0] / median[1],
+    std::printf("| %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.1f%% | %s |\n", label.c_str(), wall_median[0],
+                wall_median[1], wall_median[0] / wall_median[1], cpu_median[0], cpu_median[1],
+                cpu_median[0] / cpu_median[1],
                 100.0 * double(x.triangles_between_samples + x.triangles_degenerate) /
                     double(std::max<std::size_t>(1, scene.mesh.triangles.size())),
                 same && same_counts ? "yes" : "NO");
@@ -228,8 +252,8 @@ int main(int argc, char** argv) {
                  "Markdown row: medians in ms, walk / sorted, whether it walked, same image");
     app.add_flag("--screen-against-none", s.screen_against_none,
                  "time set-up with the coverage screen against set-up of every triangle in interleaved rounds in "
-                 "this process; print a Markdown row: medians in ms, screened / not, triangles that cover no sample, "
-                 "same image and counts");
+                 "this process; print a Markdown row: wall and CPU-time medians in ms, screened / not, triangles that "
+                 "cover no sample, same image and counts");
     app.add_flag("--stages", s.stages,
                  "also print the median time of each stage of the render pass (vertices, set-up, painter's order, "
                  "binning, fill, walks, ...) and the rest of the frame");
