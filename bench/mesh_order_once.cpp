@@ -54,21 +54,14 @@ struct Settings {
     bool stages = false;
 };
 
-/// The process's CPU time in milliseconds (every thread's).
-double process_cpu_ms() {
-    timespec now{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
-}
-
 bool g_cpu_time = false;
 
 /// `work`'s wall time in milliseconds, or with --cpu-time the CPU time the process spent in it.
 double time_work_ms(const std::function<void()>& work) {
     if (!g_cpu_time) return support::time_ms(work);
-    const double start = process_cpu_ms();
+    const double start = support::process_cpu_ms();
     work();
-    return process_cpu_ms() - start;
+    return support::process_cpu_ms() - start;
 }
 
 /// One way of rendering: an order, reordering on or off, Renderer or render().

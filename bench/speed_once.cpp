@@ -15,8 +15,6 @@
 #include <string>
 #include <vector>
 
-#include <time.h>
-
 #include <CLI/CLI.hpp>
 
 // Internal: detail::override_kernel_isa, to time the instruction sets in one process.
@@ -107,18 +105,6 @@ void time_walk_against_sorted(const phongrast::Scene& scene, const phongrast::Re
 }
 
 /// --screen-against-none: set-up with the coverage screen (coverage_screen.hpp)
-/// against set-up of every triangle, timed in one process in interleaved
-/// rounds; prints a Markdown row: medians in ms, their ratio, whether the
-/// images and the triangle counts are the same.
-/// The process's CPU time in milliseconds (every thread's): unlike wall
-/// time, not counting what the VM's host takes from it.
-double process_cpu_ms() {
-    timespec now{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
-}
-
-/// --screen-against-none: set-up with the coverage screen (coverage_screen.hpp)
 /// against set-up of every triangle, timed in one process in rounds that
 /// alternate which goes first (after a render of a large mesh the next one
 /// starts with the other's memory in the caches); prints a Markdown row:
@@ -136,9 +122,9 @@ void time_screen_against_none(const phongrast::Scene& scene, const phongrast::Re
         for (int k = 0; k < 2; ++k) {
             const int which = (round % 2 == 0) ? k : 1 - k;  // 0: screened, 1: not
             const bool was = phongrast::detail::use_coverage_screen(which == 0);
-            const double cpu_start = process_cpu_ms();
+            const double cpu_start = support::process_cpu_ms();
             const double ms = support::time_ms([&] { results[which] = renderer.render(scene); });
-            const double cpu_ms = process_cpu_ms() - cpu_start;
+            const double cpu_ms = support::process_cpu_ms() - cpu_start;
             phongrast::detail::use_coverage_screen(was);
             if (round < warmup) continue;
             wall[which].push_back(ms);

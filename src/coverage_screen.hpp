@@ -1,5 +1,6 @@
 // Set-up's coverage screen (internal header): which whole triangles certainly
-// cover no sample centre, decided four triangles at a time before set-up.
+// cover no sample centre, decided four triangles at a time (AVX2; two on the
+// baseline) before set-up.
 //
 // On a mesh of one-pixel triangles most set-up work goes to triangles that
 // draw nothing: on the 1.3M-triangle sphere at 1024², 40% of the triangles

@@ -1,6 +1,7 @@
 #include "timing.hpp"
 
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,12 @@ double median(std::vector<double> values) {
     if (n % 2) return upper;
     const double lower = *std::max_element(values.begin(), values.begin() + std::ptrdiff_t(n / 2));
     return 0.5 * (lower + upper);
+}
+
+double process_cpu_ms() {
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
 }
 
 double time_ms(const std::function<void()>& work) {

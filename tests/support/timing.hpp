@@ -24,6 +24,10 @@ inline double milliseconds_since(std::chrono::steady_clock::time_point start) {
 /// Milliseconds one call of `work` takes.
 double time_ms(const std::function<void()>& work);
 
+/// The process's CPU time in milliseconds (every thread's): on a VM, unlike
+/// wall time, not counting what the host takes from it.
+double process_cpu_ms();
+
 /// Every timing a contender gave in the timed rounds, in round order.
 using Samples = std::vector<double>;
 
