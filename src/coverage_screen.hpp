@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "fill_types.hpp"
 #include "lanes_isa.hpp"
 #include "raster.hpp"
 #include "vertex_stage.hpp"
@@ -34,6 +35,10 @@ enum class ScreenVerdict : std::uint8_t {
     set_up,           ///< not decided: set it up
     degenerate,       ///< whole, zero snapped area: SetupCounts::degenerate
     between_samples,  ///< whole, non-zero area, no centre covered: SetupCounts::between_samples
+    /// Whole, non-zero area, a box of at most 2 x 2 centres, some covered:
+    /// drawn, and all the fill needs is in the block's TinyCoverageBlock
+    /// (given only when one is asked for).
+    tiny_covered,
 };
 
 /// What the screen reads: the frame's screen vertices and the view's bounds,
@@ -56,14 +61,43 @@ bool coverage_screen_in_use();
 /// Triangles screened per call at most (the caller's verdict array).
 constexpr std::size_t kScreenBlock = 64;
 
+/// The screen's TinyCoverage of a block's triangles, in lanes (valid where
+/// the verdict is ScreenVerdict::tiny_covered).
+struct TinyCoverageBlock {
+    alignas(32) double e[3][kScreenBlock];
+    alignas(32) double column_step[3][kScreenBlock];
+    alignas(32) double row_step[3][kScreenBlock];
+    alignas(32) double area2[kScreenBlock];  ///< signed: < 0 where the corners were swapped
+    alignas(32) double column_min[kScreenBlock];
+    alignas(32) double row_min[kScreenBlock];
+    alignas(32) std::uint8_t covered[kScreenBlock];
+
+    /// Triangle `lane` of the block.
+    void get(std::size_t lane, TinyCoverage& out) const {
+        for (int i = 0; i < 3; ++i) {
+            out.e[i] = e[i][lane];
+            out.column_step[i] = column_step[i][lane];
+            out.row_step[i] = row_step[i][lane];
+        }
+        out.swapped = area2[lane] < 0.0;
+        out.area2 = out.swapped ? -area2[lane] : area2[lane];
+        out.column_min = static_cast<int>(column_min[lane]);
+        out.row_min = static_cast<int>(row_min[lane]);
+        out.covered = covered[lane];
+    }
+};
+
 /// Writes the verdict of triangles [begin, end) (at most kScreenBlock) to
 /// verdicts[0 .. end - begin), with the instruction set kernel_isa() names.
+/// With `tiny`, a triangle drawn whole in a box of at most 2 x 2 centres is
+/// ScreenVerdict::tiny_covered, its coverage in `tiny`; without, set_up.
 void screen_coverage_dispatched(const CoverageScreenInput& in, std::size_t begin, std::size_t end,
-                                ScreenVerdict* verdicts);
+                                ScreenVerdict* verdicts, TinyCoverageBlock* tiny = nullptr);
 
 #if PHONGRAST_HAVE_AVX2_KERNELS
 /// screen_coverage() compiled for AVX2 (coverage_screen_avx2.cpp).
-void screen_coverage_avx2(const CoverageScreenInput& in, std::size_t begin, std::size_t end, ScreenVerdict* verdicts);
+void screen_coverage_avx2(const CoverageScreenInput& in, std::size_t begin, std::size_t end, ScreenVerdict* verdicts,
+                          TinyCoverageBlock* tiny);
 #endif
 
 inline namespace PHONGRAST_LANES_ISA {
@@ -104,19 +138,20 @@ inline Doubles ceil_256(Doubles x) {
 /// threshold (edge_value(), CoveredRows::set_up_edge()), and its changes to
 /// the next column and row: a centre is covered when all three edges are >= 0.
 struct BiasedEdge {
-    Doubles first, column_step, row_step;
+    Doubles first, column_step, row_step, threshold;
 };
 inline BiasedEdge biased_edge(Doubles px, Doubles py, Doubles qx, Doubles qy, Doubles cx, Doubles cy) {
     const Doubles dx = qx - px, dy = qy - py;
     const Doubles threshold = ones_where((2.0 * dy - ones_where(dx > 0.0)) >= 0.0);
     const double scale = double(kSubpixelScale);
-    return {dx * (cy - py) - dy * (cx - px) - threshold, -dy * scale, dx * scale};
+    return {dx * (cy - py) - dy * (cx - px) - threshold, -dy * scale, dx * scale, threshold};
 }
+inline void store(double* to, Doubles value) { __builtin_memcpy(to, &value, sizeof value); }
 }  // namespace screen_lanes
 
 /// See screen_coverage_dispatched().
 inline void screen_coverage(const CoverageScreenInput& in, std::size_t begin, std::size_t end,
-                            ScreenVerdict* verdicts) {
+                            ScreenVerdict* verdicts, TinyCoverageBlock* tiny) {
     using namespace screen_lanes;
     // The corners in lanes: [corner][block triangle], rounded up to whole lane groups.
     alignas(32) double column[3][kScreenBlock], row[3][kScreenBlock], depth[3][kScreenBlock];
@@ -162,7 +197,7 @@ inline void screen_coverage(const CoverageScreenInput& in, std::size_t begin, st
         const Doubles row_min = maximum(ceil_256(y_min - half), Doubles{});
         const Doubles row_max = minimum(floor_256(y_max - half), Doubles{} + (in.rows - 1.0));
         const Mask empty = (column_min > column_max) | (row_min > row_max);
-        const Mask tiny = ~empty & (row_max - row_min < 2.0) & (column_max - column_min < 2.0);
+        const Mask tiny_box = ~empty & (row_max - row_min < 2.0) & (column_max - column_min < 2.0);
         // may_cover_a_centre(): the box's (at most four) centres, the vertices ordered so that area2 > 0.
         const Mask swapped = area2 < 0.0;
         const Doubles x1 = select(swapped, x[2], x[1]), y1 = select(swapped, y[2], y[1]);
@@ -177,16 +212,34 @@ inline void screen_coverage(const CoverageScreenInput& in, std::size_t begin, st
         };
         const Mask second_column = column_max > column_min, second_row = row_max > row_min;
         const Doubles r0 = e0.first + e0.row_step, r1 = e1.first + e1.row_step, r2 = e2.first + e2.row_step;
-        const Mask covered =
-            covered_at(e0.first, e1.first, e2.first) |
-            (second_column & covered_at(e0.first + e0.column_step, e1.first + e1.column_step, e2.first + e2.column_step)) |
-            (second_row & covered_at(r0, r1, r2)) |
-            (second_column & second_row & covered_at(r0 + e0.column_step, r1 + e1.column_step, r2 + e2.column_step));
+        // Each centre of the box: first row, first and second column, then the second row's.
+        const Mask covered_00 = covered_at(e0.first, e1.first, e2.first);
+        const Mask covered_01 = second_column & covered_at(e0.first + e0.column_step, e1.first + e1.column_step,
+                                                           e2.first + e2.column_step);
+        const Mask covered_10 = second_row & covered_at(r0, r1, r2);
+        const Mask covered_11 = second_column & second_row &
+                                covered_at(r0 + e0.column_step, r1 + e1.column_step, r2 + e2.column_step);
+        const Mask covered = covered_00 | covered_01 | covered_10 | covered_11;
         const Mask decided = eligible & exact;
         const Mask degenerate = decided & (area2 == 0.0);
-        const Mask between = decided & ~(area2 == 0.0) & (empty | (tiny & ~covered));
-        const Mask verdict = (degenerate & static_cast<long>(ScreenVerdict::degenerate)) |
-                             (between & static_cast<long>(ScreenVerdict::between_samples));
+        const Mask between = decided & ~(area2 == 0.0) & (empty | (tiny_box & ~covered));
+        Mask verdict = (degenerate & static_cast<long>(ScreenVerdict::degenerate)) |
+                       (between & static_cast<long>(ScreenVerdict::between_samples));
+        if (tiny != nullptr) {
+            const Mask drawn_tiny = decided & ~(area2 == 0.0) & tiny_box & covered;
+            verdict |= drawn_tiny & static_cast<long>(ScreenVerdict::tiny_covered);
+            const Mask bits = (covered_00 & 1L) | (covered_01 & 2L) | (covered_10 & 4L) | (covered_11 & 8L);
+            const BiasedEdge* edges[3] = {&e0, &e1, &e2};
+            for (int i = 0; i < 3; ++i) {
+                store(&tiny->e[i][t], edges[i]->first + edges[i]->threshold);
+                store(&tiny->column_step[i][t], edges[i]->column_step);
+                store(&tiny->row_step[i][t], edges[i]->row_step);
+            }
+            store(&tiny->area2[t], area2);
+            store(&tiny->column_min[t], column_min);
+            store(&tiny->row_min[t], row_min);
+            for (std::size_t lane = 0; lane < kLanes; ++lane) tiny->covered[t + lane] = static_cast<std::uint8_t>(bits[lane]);
+        }
         for (std::size_t lane = 0; lane < kLanes; ++lane) lane_verdicts[t + lane] = static_cast<std::uint8_t>(verdict[lane]);
     }
     __builtin_memcpy(verdicts, lane_verdicts, count);

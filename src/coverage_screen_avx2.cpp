@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "fill_types.hpp"
 #include "raster.hpp"
 #include "vertex_stage.hpp"
 
@@ -18,8 +19,9 @@ static_assert(phongrast::detail::avx2::screen_lanes::kLanes == 4, "the AVX2 copy
 
 namespace phongrast::detail {
 
-void screen_coverage_avx2(const CoverageScreenInput& in, std::size_t begin, std::size_t end, ScreenVerdict* verdicts) {
-    avx2::screen_coverage(in, begin, end, verdicts);
+void screen_coverage_avx2(const CoverageScreenInput& in, std::size_t begin, std::size_t end, ScreenVerdict* verdicts,
+                          TinyCoverageBlock* tiny) {
+    avx2::screen_coverage(in, begin, end, verdicts, tiny);
 }
 
 }  // namespace phongrast::detail

@@ -70,4 +70,15 @@ FillKernel<Real> pick_fill_kernel(const KernelChoice& choice) {
 template FillKernel<float> pick_fill_kernel<float>(const KernelChoice&);
 template FillKernel<double> pick_fill_kernel<double>(const KernelChoice&);
 
+template <typename Real>
+TinyFillKernel<Real> pick_tiny_fill_kernel(const KernelChoice& choice) {
+#if PHONGRAST_HAVE_AVX2_KERNELS
+    if (kernel_isa() == KernelIsa::avx2) return pick_tiny_kernel_avx2<Real>(choice);
+#endif
+    return pick_tiny_kernel_baseline<Real>(choice);
+}
+
+template TinyFillKernel<float> pick_tiny_fill_kernel<float>(const KernelChoice&);
+template TinyFillKernel<double> pick_tiny_fill_kernel<double>(const KernelChoice&);
+
 }  // namespace phongrast::detail

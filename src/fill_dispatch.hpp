@@ -28,6 +28,10 @@ struct KernelChoice {
 /// multiply-add.
 template <typename Real>
 FillKernel<Real> pick_fill_kernel(const KernelChoice& choice);
+/// The kernel that fills a TinyDraw as pick_fill_kernel(choice) fills the
+/// same triangle set up, from the same instruction set; null where there is none.
+template <typename Real>
+TinyFillKernel<Real> pick_tiny_fill_kernel(const KernelChoice& choice);
 
 enum class KernelIsa {
     baseline,  ///< the build's target (x86-64: SSE2, 4 floats per instruction)

@@ -134,6 +134,10 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     choice.effects = effects;
     choice.textured = textures != nullptr;
     plan.kernel = pick_fill_kernel<Real>(choice);
+    // The seed's Gouraud lights each triangle's corners in set-up: none is filled without it.
+    const bool seed_gouraud =
+        scene.shader == Shader::gouraud && options.light_vectors == LightVectors::triangle_centroid;
+    plan.tiny_kernel = seed_gouraud ? nullptr : pick_tiny_fill_kernel<Real>(choice);
     plan.effects = effects;
     plan.depth_test = options.visibility == Visibility::depth_buffer;
     plan.shade_visible_only = !plan.depth_test && overdraw_shades_visible_only(scene, options, effects);
@@ -223,12 +227,15 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
 namespace {
 std::atomic<WalkChoice> walk_choice{WalkChoice::by_triangle_size};
 std::atomic<std::uint64_t> mesh_order_fill_passes{0};
+std::atomic<std::uint64_t> tiny_draws{0};
 std::atomic<int> mesh_order_fill_walks{0};
 }  // namespace
 
 WalkChoice set_mesh_order_walk_choice(WalkChoice choice) { return walk_choice.exchange(choice); }
 
 std::uint64_t passes_filled_in_mesh_order() { return mesh_order_fill_passes.load(std::memory_order_relaxed); }
+
+std::uint64_t tiny_draws_filled() { return tiny_draws.load(std::memory_order_relaxed); }
 
 int set_mesh_order_walks(int walks) { return mesh_order_fill_walks.exchange(walks); }
 
@@ -270,11 +277,12 @@ bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs, double 
     if (samples_per_triangle > kWalkMaxSamplesPerTriangle) return false;
     // Each walk reads every triangle's corners to find those that reach its
     // rows, a cost more threads do not share, where the sorted fill's whole
-    // set-up is shared; lit flat and Gouraud walks gained at one walk only
-    // (docs/performance.md), ambient ones at two as well.
+    // set-up is shared; lit flat and seed Gouraud walks gained at one walk only
+    // (docs/performance.md), ambient ones at two as well, and so do exact
+    // Gouraud's, whose tiny triangles the walk fills with no set-up (TinyDraw).
     const int forced_walks = mesh_order_fill_walks.load(std::memory_order_relaxed);
     const int walks = forced_walks > 0 ? forced_walks : tbb::this_task_arena::max_concurrency();
-    return walks == 1 || !(plan.effects.diffuse || plan.effects.specular);
+    return walks == 1 || !(plan.effects.diffuse || plan.effects.specular) || plan.tiny_kernel != nullptr;
 }
 
 template <typename Real>
@@ -320,6 +328,7 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
         }
         DirectFill<Real> fill;
         fill.kernel = plan.kernel;
+        fill.tiny_kernel = plan.tiny_kernel;
         fill.constants = &plan.constants;
         fill.target = &target;
         DirectScratch<Real>& scratch = draws.direct_parts[walk];
@@ -343,6 +352,7 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
         stats.samples_shaded += scratch.samples_shaded;
         stats.nonfinite_values_replaced += scratch.values_replaced;
         shaded += scratch.samples_shaded;
+        tiny_draws.fetch_add(scratch.tiny_draws, std::memory_order_relaxed);
     }
     if (scene.shader == Shader::phong) {
         count_term_evaluations(scene, options, plan.effects, shaded, LitPoints::phong_samples, stats);

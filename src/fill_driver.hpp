@@ -41,6 +41,8 @@ struct FillMemory {
 template <typename Real>
 struct FillPlan {
     FillKernel<Real> kernel = nullptr;
+    /// The kernel's TinyDraw twin (pick_tiny_fill_kernel()), for the fill in mesh order; may be null.
+    TinyFillKernel<Real> tiny_kernel = nullptr;
     FillConstants<Real> constants;
     bool depth_test = false;         ///< Visibility::depth_buffer
     bool shade_visible_only = false; ///< Overdraw::shade_visible in effect
@@ -110,6 +112,9 @@ enum class WalkChoice {
 WalkChoice set_mesh_order_walk_choice(WalkChoice choice);
 /// For tests: the passes filled in mesh order since the process started.
 std::uint64_t passes_filled_in_mesh_order();
+/// For tests: the triangles those passes filled from the coverage screen's
+/// TinyDraw, with no set-up (DirectFill::tiny_kernel), since the process started.
+std::uint64_t tiny_draws_filled();
 /// For tests: the walks fill_in_mesh_order() splits the rows into (at most:
 /// each keeps a row), whatever the threads; 0 (the default) means one per
 /// thread. Returns the previous setting.

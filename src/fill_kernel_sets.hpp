@@ -17,6 +17,10 @@ template <typename Real>
 FillKernel<Real> pick_kernel_baseline(const KernelChoice& choice);
 extern template FillKernel<float> pick_kernel_baseline<float>(const KernelChoice&);
 extern template FillKernel<double> pick_kernel_baseline<double>(const KernelChoice&);
+template <typename Real>
+TinyFillKernel<Real> pick_tiny_kernel_baseline(const KernelChoice& choice);
+extern template TinyFillKernel<float> pick_tiny_kernel_baseline<float>(const KernelChoice&);
+extern template TinyFillKernel<double> pick_tiny_kernel_baseline<double>(const KernelChoice&);
 
 #if PHONGRAST_HAVE_AVX2_KERNELS
 /// The kernel for `choice` compiled for AVX2 (fill_kernels_avx2.hpp).
@@ -24,6 +28,10 @@ template <typename Real>
 FillKernel<Real> pick_kernel_avx2(const KernelChoice& choice);
 extern template FillKernel<float> pick_kernel_avx2<float>(const KernelChoice&);
 extern template FillKernel<double> pick_kernel_avx2<double>(const KernelChoice&);
+template <typename Real>
+TinyFillKernel<Real> pick_tiny_kernel_avx2(const KernelChoice& choice);
+extern template TinyFillKernel<float> pick_tiny_kernel_avx2<float>(const KernelChoice&);
+extern template TinyFillKernel<double> pick_tiny_kernel_avx2<double>(const KernelChoice&);
 #endif
 
 }  // namespace phongrast::detail

@@ -66,16 +66,20 @@ inline void span_weights(const std::int64_t* e, const std::int64_t* step, Real i
 /// renormalised by their sum, whose inverse is the depth. The fill and the
 /// extra outputs' pass both use it, so their depths compare equal.
 template <typename Real, bool Perspective>
-PHONGRAST_FILL_INLINE Real sample_weights(const FillTriangle<Real>& draw, const Real* q, const Real* dq, int k,
-                                          Real* w) {
+PHONGRAST_FILL_INLINE Real sample_weights(const Real* corner_depth, const Real* q, const Real* dq, int k, Real* w) {
     for (int i = 0; i < 3; ++i) w[i] = q[i] + dq[i] * static_cast<Real>(k);
     if constexpr (Perspective) {
         const Real depth = Real(1) / (w[0] + w[1] + w[2]);
         for (int i = 0; i < 3; ++i) w[i] *= depth;
         return depth;
     } else {
-        return w[0] * draw.depth[0] + w[1] * draw.depth[1] + w[2] * draw.depth[2];
+        return w[0] * corner_depth[0] + w[1] * corner_depth[1] + w[2] * corner_depth[2];
     }
+}
+template <typename Real, bool Perspective>
+PHONGRAST_FILL_INLINE Real sample_weights(const FillTriangle<Real>& draw, const Real* q, const Real* dq, int k,
+                                          Real* w) {
+    return sample_weights<Real, Perspective>(draw.depth, q, dq, k, w);
 }
 
 /// span_weights() for the kernels: dq is the same for every span of a
@@ -296,7 +300,7 @@ PHONGRAST_FILL_INLINE void write_if_ranked_later(std::uint64_t* keys, std::uint3
 
 /// fill_ranked_span()'s loop (`Ties`: write_if_ranked_later()).
 template <bool Ties, typename Real, bool Perspective, typename Shade>
-PHONGRAST_FILL_INLINE void fill_ranked_samples(const FillTriangle<Real>& draw, FillTarget<Real>& target,
+PHONGRAST_FILL_INLINE void fill_ranked_samples(const Real* corner_depth, FillTarget<Real>& target,
                                                std::size_t start, int count, const Real* q, const Real* dq,
                                                Shade& shade) {
     std::uint64_t* keys = target.rank_keys + start;
@@ -306,7 +310,7 @@ PHONGRAST_FILL_INLINE void fill_ranked_samples(const FillTriangle<Real>& draw, F
     const std::uint32_t tie = target.tie;
     for (int k = 0; k < count; ++k) {
         Real w[3];
-        sample_weights<Real, Perspective>(draw, q, dq, k, w);
+        sample_weights<Real, Perspective>(corner_depth, q, dq, k, w);
         const glm::vec3 colour = finite_or_replaced(glm::vec3(shade(w)), target.replaced);
         write_if_ranked_later<Ties>(keys, ties, pixels, k, key, tie, colour);
     }
@@ -343,14 +347,14 @@ PHONGRAST_NOINLINE void fill_ranked_span_lanes(FillTarget<Real>& target, std::si
 /// last, whatever order the draws come in. Kept out of line: the painter's
 /// fill does not carry its registers.
 template <typename Real, bool Perspective, typename Shade>
-PHONGRAST_NOINLINE void fill_ranked_span(const FillTriangle<Real>& draw, FillTarget<Real>& target,
+PHONGRAST_NOINLINE void fill_ranked_span(const Real* corner_depth, FillTarget<Real>& target,
                                          std::size_t row_start, int first_column, int count, const Real* q,
                                          const Real* dq, Shade& shade) {
     const std::size_t start = row_start + static_cast<std::size_t>(first_column);
     if (target.rank_ties != nullptr) {
-        fill_ranked_samples<true, Real, Perspective>(draw, target, start, count, q, dq, shade);
+        fill_ranked_samples<true, Real, Perspective>(corner_depth, target, start, count, q, dq, shade);
     } else {
-        fill_ranked_samples<false, Real, Perspective>(draw, target, start, count, q, dq, shade);
+        fill_ranked_samples<false, Real, Perspective>(corner_depth, target, start, count, q, dq, shade);
     }
     target.samples += static_cast<std::uint64_t>(count);
 }
@@ -383,7 +387,7 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
                     return;
                 }
             }
-            fill_ranked_span<Real, Perspective>(draw, target, row_start, first_column, count, q, dq, shade);
+            fill_ranked_span<Real, Perspective>(draw.depth, target, row_start, first_column, count, q, dq, shade);
             return;
         }
         if constexpr (!std::is_same_v<std::decay_t<ShadeLanes>, NoLanes>) {
@@ -716,6 +720,83 @@ void fill_phong_unlit(const FillTriangle<Real>& draw, FillTarget<Real>& target, 
     });
 }
 
+/// fill_samples() for a TinyDraw (a whole triangle whose box of at most 2 x 2
+/// centres the coverage screen tested): the spans tiny_spans() would find,
+/// the screen's covered centres in the target's rows, with SpanWeights'
+/// weights from the same exact edge values, then each sample as
+/// fill_samples() shades and writes it, by the rank test or written as it
+/// is. Only the fill in mesh order fills tiny draws: no owner buffer, no depth buffer.
+template <typename Real, bool Perspective, typename Shade>
+PHONGRAST_FILL_INLINE void fill_tiny_samples(const TinyDraw<Real>& draw, FillTarget<Real>& target, Shade&& shade) {
+    assert(target.owner == nullptr && !target.depth_test);
+    const TinyCoverage& c = draw.coverage;
+    Real inverse_area = Real(0), inverse_depth[3] = {Real(1), Real(1), Real(1)}, dq[3] = {};
+    bool weights_set_up = false;
+    const std::size_t columns = static_cast<std::size_t>(target.image.columns);
+    for (int r = 0; r < 2; ++r) {
+        const unsigned in_row = (c.covered >> (2 * r)) & 3u;
+        const int row = c.row_min + r;
+        if (in_row == 0 || row < target.row_begin || row >= target.row_end) continue;
+        if (!weights_set_up) {
+            // SpanWeights::set_up(), at the first covered span as there.
+            inverse_area = Real(1) / static_cast<Real>(static_cast<std::int64_t>(c.area2));
+            if constexpr (Perspective) {
+                for (int i = 0; i < 3; ++i) inverse_depth[i] = Real(1) / draw.depth[i];
+            }
+            for (int i = 0; i < 3; ++i) {
+                dq[i] = edge_weight<Real, Perspective>(static_cast<std::int64_t>(c.column_step[i]), inverse_area,
+                                                       inverse_depth[i]);
+            }
+            weights_set_up = true;
+        }
+        const int skip = (in_row & 1u) != 0 ? 0 : 1;  // the row's first covered column: the box's first or second
+        const int count = in_row == 3u ? 2 : 1;
+        Real q[3];
+        for (int i = 0; i < 3; ++i) {
+            const double e = c.e[i] + c.row_step[i] * r + c.column_step[i] * skip;  // exact: integers below 2^53
+            q[i] = edge_weight<Real, Perspective>(static_cast<std::int64_t>(e), inverse_area, inverse_depth[i]);
+        }
+        const int first_column = c.column_min + skip;
+        const std::size_t row_start = static_cast<std::size_t>(row) * columns;
+        target.covered += static_cast<std::uint64_t>(count);
+        if (target.rank_keys != nullptr) {
+            fill_ranked_span<Real, Perspective>(draw.depth, target, row_start, first_column, count, q, dq, shade);
+            continue;
+        }
+        for (int k = 0; k < count; ++k) {
+            Real w[3];
+            sample_weights<Real, Perspective>(draw.depth, q, dq, k, w);
+            target.image.pixels[row_start + static_cast<std::size_t>(first_column + k)] =
+                finite_or_replaced(glm::vec3(shade(w)), target.replaced);
+        }
+        target.samples += static_cast<std::uint64_t>(count);
+    }
+}
+
+/// fill_lit() for a TinyDraw: corner[i] is the lit colour.
+template <typename Real, bool Perspective>
+void fill_tiny_lit(const TinyDraw<Real>& draw, FillTarget<Real>& target, const FillConstants<Real>&) {
+    fill_tiny_samples<Real, Perspective>(draw, target, [&](const Real* w) {
+        return w[0] * *draw.corner[0] + w[1] * *draw.corner[1] + w[2] * *draw.corner[2];
+    });
+}
+
+/// fill_phong_unlit() with the ambient term and varying colours for a
+/// TinyDraw: corner[i] is the vertex colour.
+template <typename Real, bool Perspective>
+void fill_tiny_ambient(const TinyDraw<Real>& draw, FillTarget<Real>& target, const FillConstants<Real>& constants) {
+    const Vec3<Real> factor = constants.rig[draw.surface].ambient_factor;
+    fill_tiny_samples<Real, Perspective>(draw, target, [&](const Real* w) {
+        Vec3<Real> out(Real(0));
+        for (int c = 0; c < 3; ++c) {
+            const Real color =
+                (w[0] * (*draw.corner[0])[c] + w[1] * (*draw.corner[1])[c]) + w[2] * (*draw.corner[2])[c];
+            out[c] += factor[c] * color;
+        }
+        return out;
+    });
+}
+
 /// Phong as a straightforward implementation writes it: every term checked per batch, every light.
 /// Textured: the same with c multiplied by T(s, t) at each sample (the kernel of textured scenes).
 template <typename Real, bool Perspective, bool PerSampleVectors, bool Textured = false>
@@ -773,6 +854,19 @@ FillKernel<Real> pick_kernel_for_projection(const KernelChoice& c) {
         case 6: return pick_phong_vectors_color<Real, Perspective, true, true, false>(c);
         default: return pick_phong_vectors_color<Real, Perspective, true, true, true>(c);
     }
+}
+
+/// The TinyDraw kernel matching pick_kernel(c), where there is one: Gouraud
+/// untextured, Phong (specialised) with only the ambient term and varying colours.
+template <typename Real>
+TinyFillKernel<Real> pick_tiny_kernel(const KernelChoice& c) {
+    if (c.flat || c.textured) return nullptr;
+    if (!c.phong) return c.perspective ? &fill_tiny_lit<Real, true> : &fill_tiny_lit<Real, false>;
+    const EffectSet& e = c.effects;
+    if (c.specialized && e.ambient && !e.diffuse && !e.specular && !c.uniform_color) {
+        return c.perspective ? &fill_tiny_ambient<Real, true> : &fill_tiny_ambient<Real, false>;
+    }
+    return nullptr;
 }
 
 /// The single dispatch of a render.

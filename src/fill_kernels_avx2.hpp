@@ -38,6 +38,11 @@ FillKernel<Real> pick_kernel_avx2(const KernelChoice& choice) {
     return avx2::pick_kernel<Real>(choice);
 }
 
+template <typename Real>
+TinyFillKernel<Real> pick_tiny_kernel_avx2(const KernelChoice& choice) {
+    return avx2::pick_tiny_kernel<Real>(choice);
+}
+
 }  // namespace phongrast::detail
 
 #endif  // PHONGRAST_SRC_FILL_KERNELS_AVX2_HPP

@@ -4,5 +4,6 @@
 namespace phongrast::detail {
 
 template FillKernel<float> pick_kernel_avx2<float>(const KernelChoice&);
+template TinyFillKernel<float> pick_tiny_kernel_avx2<float>(const KernelChoice&);
 
 }  // namespace phongrast::detail

@@ -15,6 +15,11 @@ FillKernel<Real> pick_kernel_baseline(const KernelChoice& choice) {
     return baseline::pick_kernel<Real>(choice);
 }
 
+template <typename Real>
+TinyFillKernel<Real> pick_tiny_kernel_baseline(const KernelChoice& choice) {
+    return baseline::pick_tiny_kernel<Real>(choice);
+}
+
 }  // namespace phongrast::detail
 
 #endif  // PHONGRAST_SRC_FILL_KERNELS_BASELINE_HPP

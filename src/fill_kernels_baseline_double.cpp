@@ -4,5 +4,6 @@
 namespace phongrast::detail {
 
 template FillKernel<double> pick_kernel_baseline<double>(const KernelChoice&);
+template TinyFillKernel<double> pick_tiny_kernel_baseline<double>(const KernelChoice&);
 
 }  // namespace phongrast::detail

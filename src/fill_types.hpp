@@ -196,6 +196,38 @@ template <typename Real>
 using FillKernel = void (*)(const FillTriangle<Real>&, FillTarget<Real>&, LightVectorsAt<Real>&,
                             const FillConstants<Real>&);
 
+/// What the coverage screen (coverage_screen.hpp) found of a whole triangle
+/// whose bounding box holds at most 2 x 2 sample centres, some of them
+/// covered: all the fill needs of its coverage, so the walk fills it with no
+/// set-up of its own (TinyFillKernel). The corners are in coverage order
+/// (SnappedTriangle: 0, then 1 and 2 exchanged when `swapped`), and every
+/// value is an integer below 2^53, so the doubles hold the fill's int64 values exactly.
+struct TinyCoverage {
+    double e[3];            ///< edge values opposite each corner at the box's first centre, unbiased (CoveredSpan::e)
+    double column_step[3];  ///< their change per column (CoveredRows::step())
+    double row_step[3];     ///< and per row
+    double area2;           ///< SnappedTriangle::area2(), > 0
+    int column_min, row_min;  ///< the box's first centre (clamped to the image)
+    unsigned covered;       ///< bit 2 r + c set where centre (row_min + r, column_min + c) is covered
+    bool swapped;           ///< corners 1 and 2 were exchanged
+};
+
+/// A tiny triangle to fill: its coverage and, in coverage order, what the
+/// kernel interpolates at its corners (Gouraud: the lit colours; Phong
+/// ambient only: the vertex colours) and their depths z_c.
+template <typename Real>
+struct TinyDraw {
+    TinyCoverage coverage;
+    const Vec3<Real>* corner[3];
+    Real depth[3];
+    std::uint32_t surface;  ///< FillTriangle::surface
+};
+
+/// Fills a TinyDraw as the render's FillKernel fills the FillTriangle set-up
+/// would make of the same triangle: the same samples, bits and counts.
+template <typename Real>
+using TinyFillKernel = void (*)(const TinyDraw<Real>&, FillTarget<Real>&, const FillConstants<Real>&);
+
 }  // namespace phongrast::detail
 
 #endif  // PHONGRAST_SRC_FILL_TYPES_HPP

@@ -132,6 +132,18 @@ public:
     void count_screened(ScreenVerdict verdict) {
         ++(verdict == ScreenVerdict::degenerate ? counts_.degenerate : counts_.between_samples);
     }
+    /// Counts a tiny triangle the walk filled from the screen's coverage (drawn, as run() counts it).
+    void count_drawn() { ++counts_.drawn; }
+
+    /// What a drawn triangle's FillTriangle::lit holds at its corners when
+    /// they are lit per vertex, nothing per triangle (exact Gouraud, untextured):
+    /// the vertex's `lit`, or the one colour everywhere (returned; else null).
+    /// Whether that is so: lit_per_vertex().
+    bool lit_per_vertex() const {
+        return in_.scene.shader == Shader::gouraud && in_.options.light_vectors != LightVectors::triangle_centroid &&
+               !in_parts_;
+    }
+    const Vec3<Real>* same_lit() const { return same_lit_ ? &*same_lit_ : nullptr; }
 
 private:
     /// The triangle's centroid (camera space) where flat shading or the
@@ -483,11 +495,15 @@ public:
     static constexpr std::size_t kWorthShare = 4;  // 1 in 4
     static constexpr std::size_t kRestBlocks = 8;
 
-    ScreenedBlock(const CoverageScreenInput& input, std::size_t end) : input_(input), end_(end) {}
+    /// With `tiny`, tiny covered triangles are found too (ScreenVerdict::tiny_covered).
+    ScreenedBlock(const CoverageScreenInput& input, std::size_t end, TinyCoverageBlock* tiny = nullptr)
+        : input_(input), end_(end), tiny_(tiny) {}
     ScreenVerdict verdict(std::size_t t) {
         if (t >= block_end_ || t < block_begin_) screen_from(t);
         return verdicts_[t - block_begin_];
     }
+    /// The coverage of triangle t, whose verdict() was tiny_covered.
+    void tiny_coverage(std::size_t t, TinyCoverage& out) const { tiny_->get(t - block_begin_, out); }
 
 private:
     void screen_from(std::size_t t) {
@@ -497,7 +513,7 @@ private:
             std::fill(verdicts_, verdicts_ + (block_end_ - block_begin_), ScreenVerdict::set_up);
             return;
         }
-        screen_coverage_dispatched(input_, block_begin_, block_end_, verdicts_);
+        screen_coverage_dispatched(input_, block_begin_, block_end_, verdicts_, tiny_);
         const std::size_t decided = static_cast<std::size_t>(std::count_if(
             verdicts_, verdicts_ + (block_end_ - block_begin_), [](ScreenVerdict v) { return v != ScreenVerdict::set_up; }));
         if (decided * kWorthShare < block_end_ - block_begin_) resume_at_ = block_end_ + kRestBlocks * kScreenBlock;
@@ -505,6 +521,7 @@ private:
 
     const CoverageScreenInput& input_;
     std::size_t end_;
+    TinyCoverageBlock* tiny_;
     std::size_t block_begin_ = 0, block_end_ = 0;
     std::size_t resume_at_ = 0;  ///< no screening before this triangle
     ScreenVerdict verdicts_[kScreenBlock];
@@ -698,6 +715,7 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     ClipVertexStore<Real>& clip_vertices = scratch.clip_vertices;
     // The triangles this part owns are counted; the others it sets up only to fill their rows here.
     scratch.counts = SetupCounts{};
+    scratch.tiny_draws = 0;
     SetupCounts counted_elsewhere;
     TriangleSetup<Real> owned_setup(input, out, clip_vertices, scratch.counts, scratch.vectors);
     TriangleSetup<Real> shared_setup(input, out, clip_vertices, counted_elsewhere, scratch.vectors);
@@ -738,9 +756,20 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     };
     const CoverageScreenInput screen_input = coverage_screen_input(input);
     const bool screened = owned_setup.screens();
+    // Tiny covered triangles straight from the screen to the fill, where
+    // the kernel has a TinyDraw twin and set-up would take the corners'
+    // values as they are: Gouraud's lit per vertex (not the seed's, lit per
+    // triangle), Phong's vertex colours.
+    const bool gouraud = input.scene.shader == Shader::gouraud;
+    const bool fills_tiny = screened && fill.tiny_kernel != nullptr && !batched &&
+                            (gouraud ? owned_setup.lit_per_vertex() : input.scene.shader == Shader::phong);
+    const Vec3<Real>* const same_lit = owned_setup.same_lit();
+    TinyCoverageBlock tiny_block;
+    TinyDraw<Real> tiny;
+    tiny.surface = 0;
     for (std::size_t chunk = 0; chunk < chunks && !progress.cancelled(); ++chunk) {
         const std::size_t end = std::min(triangles.size(), (chunk + 1) * kSetupChunk);
-        ScreenedBlock screening(screen_input, end);
+        ScreenedBlock screening(screen_input, end, fills_tiny ? &tiny_block : nullptr);
         for (std::size_t t = chunk * kSetupChunk; t < end; ++t) {
             const Triangle& tri = triangles[t];
             bool owned = true;
@@ -779,6 +808,26 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
             }
             if (screened) {
                 const ScreenVerdict verdict = screening.verdict(t);
+                if (verdict == ScreenVerdict::tiny_covered) {
+                    if (owned) owned_setup.count_drawn();
+                    screening.tiny_coverage(t, tiny.coverage);
+                    const std::uint32_t corners[3] = {tri[0], tiny.coverage.swapped ? tri[2] : tri[1],
+                                                      tiny.coverage.swapped ? tri[1] : tri[2]};
+                    for (int i = 0; i < 3; ++i) {
+                        const Varyings<Real>& v = varyings[corners[i]];
+                        tiny.corner[i] = !gouraud ? &v.color : same_lit != nullptr ? same_lit : &v.lit;
+                        tiny.depth[i] = static_cast<Real>(screen[corners[i]].depth);
+                    }
+                    if (input.triangle_surfaces != nullptr) tiny.surface = input.triangle_surfaces[t];
+                    if (fill.ranked) {
+                        target.key = painter_key(tri, screen);
+                        target.tie = fill.original_triangle != nullptr ? fill.original_triangle[t]
+                                                                       : static_cast<std::uint32_t>(t);
+                    }
+                    fill.tiny_kernel(tiny, target, *fill.constants);
+                    ++scratch.tiny_draws;
+                    continue;
+                }
                 if (verdict != ScreenVerdict::set_up) {
                     if (owned) owned_setup.count_screened(verdict);
                     continue;

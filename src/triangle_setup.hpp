@@ -77,6 +77,7 @@ struct alignas(64) DirectScratch {
     LightVectorsAt<Real> fill_vectors;     ///< the fill kernel's
     SetupCounts counts;                    ///< the triangles this walk owns (RowSplit::owner)
     std::uint64_t samples_covered = 0, samples_shaded = 0, values_replaced = 0;  ///< its FillTarget's counts
+    std::uint64_t tiny_draws = 0;  ///< triangles filled from the coverage screen's TinyDraw (no set-up)
 };
 
 /// Set-up's output, in mesh order: chunk after chunk of kSetupChunk mesh
@@ -151,6 +152,9 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
 template <typename Real>
 struct DirectFill {
     FillKernel<Real> kernel = nullptr;
+    /// Fills the triangles the coverage screen found tiny and covering
+    /// (TinyDraw) without setting them up; null: they are set up as any.
+    TinyFillKernel<Real> tiny_kernel = nullptr;
     const FillConstants<Real>* constants = nullptr;
     FillTarget<Real>* target = nullptr;
     LightVectorsAt<Real>* vectors = nullptr;

@@ -31,8 +31,22 @@ using detail::ScreenVertex;
 
 namespace {
 
+/// The coverage set-up gives a whole triangle inside the frame, by its own function.
+detail::CoverageTriangle set_up_coverage(const CoverageScreenInput& in, const phongrast::Triangle& tri, bool& box) {
+    const ScreenVertex& a = in.screen[tri[0]];
+    const ScreenVertex& b = in.screen[tri[1]];
+    const ScreenVertex& c = in.screen[tri[2]];
+    detail::CoverageTriangle coverage;
+    box = detail::setup_coverage(detail::snap(a.column, a.row), detail::snap(b.column, b.row),
+                                 detail::snap(c.column, c.row), static_cast<int>(in.rows), static_cast<int>(in.columns),
+                                 coverage);
+    return coverage;
+}
+
 /// What TriangleSetup::run() and set_up_piece() conclude for a triangle, by
-/// their own functions: set_up where it is not a whole triangle that covers nothing.
+/// their own functions: set_up where it is not a whole triangle that covers
+/// nothing, or (what the screen finds when asked for it) tiny_covered where
+/// it is a whole one drawn in a box of at most 2 x 2 centres.
 ScreenVerdict set_up_verdict(const CoverageScreenInput& in, double near_depth, const phongrast::Triangle& tri) {
     for (std::uint32_t index : tri) {
         const ScreenVertex& s = in.screen[index];
@@ -41,15 +55,41 @@ ScreenVerdict set_up_verdict(const CoverageScreenInput& in, double near_depth, c
         const bool drawable = s.depth <= in.max_depth || s.depth < 0.0;
         if (!inside || !drawable || !(s.depth >= near_depth)) return ScreenVerdict::set_up;
     }
-    const ScreenVertex& a = in.screen[tri[0]];
-    const ScreenVertex& b = in.screen[tri[1]];
-    const ScreenVertex& c = in.screen[tri[2]];
-    detail::CoverageTriangle coverage;
-    const bool box = detail::setup_coverage(detail::snap(a.column, a.row), detail::snap(b.column, b.row),
-                                            detail::snap(c.column, c.row), static_cast<int>(in.rows),
-                                            static_cast<int>(in.columns), coverage);
+    bool box = false;
+    const detail::CoverageTriangle coverage = set_up_coverage(in, tri, box);
     if (!box) return coverage.area2() == 0 ? ScreenVerdict::degenerate : ScreenVerdict::between_samples;
-    return detail::may_cover_a_centre(coverage) ? ScreenVerdict::set_up : ScreenVerdict::between_samples;
+    if (!detail::may_cover_a_centre(coverage)) return ScreenVerdict::between_samples;
+    const bool tiny = coverage.row_max - coverage.row_min < 2 && coverage.column_max - coverage.column_min < 2;
+    return tiny ? ScreenVerdict::tiny_covered : ScreenVerdict::set_up;
+}
+
+/// The verdict of a screen not asked for tiny triangles.
+ScreenVerdict without_tiny(ScreenVerdict verdict) {
+    return verdict == ScreenVerdict::tiny_covered ? ScreenVerdict::set_up : verdict;
+}
+
+/// Checks the screen's TinyCoverage of a tiny covered triangle against set-up's
+/// coverage and the fill's spans (for_each_covered_pixel(): the centres covered
+/// and the exact edge values at each).
+void check_tiny_coverage(const CoverageScreenInput& in, const phongrast::Triangle& tri, const detail::TinyCoverage& got) {
+    bool box = false;
+    const detail::CoverageTriangle coverage = set_up_coverage(in, tri, box);
+    REQUIRE(box);
+    CHECK(got.swapped == coverage.swapped);
+    CHECK(got.area2 == double(coverage.area2()));
+    CHECK(got.column_min == coverage.column_min);
+    CHECK(got.row_min == coverage.row_min);
+    unsigned covered = 0;
+    detail::for_each_covered_pixel(coverage, coverage.row_min, coverage.row_max + 1,
+                                   [&](int row, int column, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
+        const int r = row - coverage.row_min, c = column - coverage.column_min;
+        covered |= 1u << (2 * r + c);
+        const std::int64_t e[3] = {e0, e1, e2};
+        for (int i = 0; i < 3; ++i) {
+            CHECK(got.e[i] + got.row_step[i] * r + got.column_step[i] * c == double(e[i]));
+        }
+    });
+    CHECK(got.covered == covered);
 }
 
 /// A coordinate on the 1/256 grid, often exactly on a sample centre or a
@@ -125,12 +165,18 @@ std::vector<phongrast::Triangle> screen_triangles(std::mt19937& random, std::vec
     return triangles;
 }
 
-/// The screen as set-up calls it, in kScreenBlock blocks from `begin`.
-std::vector<ScreenVerdict> screened(const CoverageScreenInput& in, std::size_t begin, std::size_t end) {
+/// The screen as set-up calls it, in kScreenBlock blocks from `begin`; with
+/// `tiny`, as the walk calls it, each tiny covered triangle's coverage there.
+std::vector<ScreenVerdict> screened(const CoverageScreenInput& in, std::size_t begin, std::size_t end,
+                                    std::vector<detail::TinyCoverage>* tiny = nullptr) {
     std::vector<ScreenVerdict> verdicts(end - begin);
+    if (tiny != nullptr) tiny->assign(end - begin, detail::TinyCoverage{});
+    detail::TinyCoverageBlock block;
     for (std::size_t from = begin; from < end; from += detail::kScreenBlock) {
         const std::size_t to = std::min(end, from + detail::kScreenBlock);
-        detail::screen_coverage_dispatched(in, from, to, verdicts.data() + (from - begin));
+        detail::screen_coverage_dispatched(in, from, to, verdicts.data() + (from - begin),
+                                           tiny != nullptr ? &block : nullptr);
+        for (std::size_t t = from; tiny != nullptr && t < to; ++t) block.get(t - from, (*tiny)[t - begin]);
     }
     return verdicts;
 }
@@ -154,7 +200,7 @@ TEST_CASE("the coverage screen decides a whole triangle exactly as set-up's test
         in.max_depth = detail::kMaxDrawableDepth<float>;
         std::size_t expected_decided = 0;
         for (const phongrast::Triangle& tri : triangles) {
-            expected_decided += set_up_verdict(in, near_depth, tri) != ScreenVerdict::set_up;
+            expected_decided += without_tiny(set_up_verdict(in, near_depth, tri)) != ScreenVerdict::set_up;
         }
         // Not a vacuous comparison: many triangles of each kind.
         CHECK(expected_decided > triangles.size() / 5);
@@ -167,17 +213,22 @@ TEST_CASE("the coverage screen decides a whole triangle exactly as set-up's test
             // From 0, and from 3: blocks whose last lane group is not full.
             for (std::size_t begin : {std::size_t(0), std::size_t(3)}) {
                 const std::vector<ScreenVerdict> verdicts = screened(in, begin, triangles.size());
-                std::size_t counts[3] = {};
+                std::vector<detail::TinyCoverage> tiny;
+                const std::vector<ScreenVerdict> walk_verdicts = screened(in, begin, triangles.size(), &tiny);
+                std::size_t counts[4] = {};
                 for (std::size_t t = begin; t < triangles.size(); ++t) {
                     const ScreenVerdict expected = set_up_verdict(in, near_depth, triangles[t]);
                     const ScreenVerdict got = verdicts[t - begin];
                     INFO("triangle " << t << ", ISA " << int(isa) << ", offset " << offset.x);
                     // Every value is exact on this small frame: the screen decides all it may.
-                    REQUIRE(int(got) == int(expected));
-                    ++counts[int(got)];
+                    REQUIRE(int(got) == int(without_tiny(expected)));
+                    REQUIRE(int(walk_verdicts[t - begin]) == int(expected));
+                    if (expected == ScreenVerdict::tiny_covered) check_tiny_coverage(in, triangles[t], tiny[t - begin]);
+                    ++counts[int(walk_verdicts[t - begin])];
                 }
                 CHECK(counts[int(ScreenVerdict::degenerate)] > 50);
                 CHECK(counts[int(ScreenVerdict::between_samples)] > 200);
+                CHECK(counts[int(ScreenVerdict::tiny_covered)] > 200);
             }
         }
         detail::override_kernel_isa(std::nullopt);

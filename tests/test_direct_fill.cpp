@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "fill_dispatch.hpp"
 #include "fill_driver.hpp"
 #include "mesh_order.hpp"
 #include "shuffled_mesh.hpp"
@@ -226,6 +227,53 @@ TEST_CASE("the fill in mesh order supersamples as painter's fill does") {
     }
 }
 
+TEST_CASE("tiny triangles filled straight from the coverage screen paint painter's picture") {
+    // A dense sphere on 48 x 40 pixels: most triangles' boxes hold at most 2 x 2
+    // centres. The walk fills those the screen finds covered from its TinyDraw,
+    // with no set-up (exact Gouraud, lit or not; Phong ambient with vertex
+    // colours, specialised): the same bits and counts as set-up and its fill,
+    // in every walk split, precision, instruction set and camera model.
+    Scene scene = coloured_sphere_scene();
+    scene.mesh = test_meshes::uv_sphere(90, 90, 1.0);
+    scene.mesh.colors.clear();
+    for (const glm::dvec3& p : scene.mesh.positions) {
+        scene.mesh.colors.push_back(glm::vec3(0.5 + 0.5 * p.x, 0.5 + 0.5 * p.y, 0.3 + 0.2 * p.z));
+    }
+    scene.image = {40, 48, {0.1f, 0.2f, 0.3f}};
+    const Camera pinhole = scene.camera;
+    const Camera parallel = Camera::orthographic(pinhole.eye, pinhole.lookat, pinhole.up, 2.6, 2.6);
+    const Lighting ambient = Lighting::only_ambient(), full = Lighting::full();
+    for (const Camera& camera : {pinhole, parallel}) {
+        scene.camera = camera;
+        for (const auto& [shader, lighting] : {std::pair{Shader::gouraud, full}, std::pair{Shader::gouraud, ambient},
+                                               std::pair{Shader::phong, ambient}}) {
+            scene.shader = shader;
+            scene.lighting = lighting;
+            for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+                if (shader == Shader::phong && !mode.options.specialize_effects) continue;  // batches: sorted
+                // The seed's Gouraud lights corners per triangle in set-up: none without it.
+                const bool tiny = shader == Shader::phong || mode.options.light_vectors != LightVectors::triangle_centroid;
+                for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
+                    if (!detail::kernel_isa_available(isa)) continue;  // no AVX2: the baseline alone
+                    detail::override_kernel_isa(isa);
+                    INFO(to_string(shader) << (lighting.diffuse ? ", full lighting, " : ", ambient, ") << mode.name
+                                           << (camera.model == CameraModel::orthographic ? ", orthographic" : "")
+                                           << ", ISA " << detail::to_string(isa));
+                    const std::uint64_t before = detail::tiny_draws_filled();
+                    check_painters_picture(scene, mode.options);
+                    // Ten walked renders: each fills hundreds of tiny triangles, or none.
+                    if (tiny) {
+                        CHECK(detail::tiny_draws_filled() > before + 10 * 500);
+                    } else {
+                        CHECK(detail::tiny_draws_filled() == before);
+                    }
+                }
+                detail::override_kernel_isa(std::nullopt);
+            }
+        }
+    }
+}
+
 TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's order") {
     // A shuffled icosphere, reordered by the Renderer (mesh_order.hpp): the
     // walk is in the copy's order, the ties must stay the caller's.
@@ -317,33 +365,37 @@ TEST_CASE("Phong lit per sample, extra outputs and the depth buffer do not fill 
     CHECK(detail::passes_filled_in_mesh_order() == before);
 }
 
-TEST_CASE("the fill in mesh order is taken for small triangles, and lit ones on one thread") {
-    RenderOptions options = RenderOptions::exact();
-    for (Shader shader : {Shader::flat, Shader::gouraud}) {
-        for (Lighting lighting : {Lighting::only_ambient(), Lighting::full()}) {
-            const bool lit = lighting.diffuse;
-            INFO(to_string(shader) << (lit ? ", full lighting" : ", ambient"));
-            options.threads = 1;
-            // The sphere's triangles cover a few samples each: walked.
-            Scene small = coloured_sphere_scene();
-            small.shader = shader;
-            small.lighting = lighting;
-            std::uint64_t before = detail::passes_filled_in_mesh_order();
-            render(small, options);
-            CHECK(detail::passes_filled_in_mesh_order() == before + 1);
-            // The same sphere at 8 x 8 times the pixels: its triangles cover 64 times the samples, sorted.
-            Scene large = small;
-            large.image.rows *= 8;
-            large.image.columns *= 8;
-            before = detail::passes_filled_in_mesh_order();
-            render(large, options);
-            CHECK(detail::passes_filled_in_mesh_order() == before);
-            // Two walks: ambient only.
-            options.threads = 2;
-            MeshOrderWalks two(2);
-            before = detail::passes_filled_in_mesh_order();
-            render(small, options);
-            CHECK(detail::passes_filled_in_mesh_order() == before + (lit ? 0 : 1));
+TEST_CASE("the fill in mesh order is taken for small triangles, lit flat and seed Gouraud on one thread") {
+    for (const RenderOptions& mode : {RenderOptions::exact(), RenderOptions::seed()}) {
+        for (Shader shader : {Shader::flat, Shader::gouraud}) {
+            for (Lighting lighting : {Lighting::only_ambient(), Lighting::full()}) {
+                RenderOptions options = mode;
+                const bool lit = lighting.diffuse;
+                const bool seed = options.light_vectors == LightVectors::triangle_centroid;
+                INFO(to_string(shader) << (lit ? ", full lighting" : ", ambient") << (seed ? ", seed" : ", exact"));
+                options.threads = 1;
+                // The sphere's triangles cover a few samples each: walked.
+                Scene small = coloured_sphere_scene();
+                small.shader = shader;
+                small.lighting = lighting;
+                std::uint64_t before = detail::passes_filled_in_mesh_order();
+                render(small, options);
+                CHECK(detail::passes_filled_in_mesh_order() == before + 1);
+                // The same sphere at 8 x 8 times the pixels: its triangles cover 64 times the samples, sorted.
+                Scene large = small;
+                large.image.rows *= 8;
+                large.image.columns *= 8;
+                before = detail::passes_filled_in_mesh_order();
+                render(large, options);
+                CHECK(detail::passes_filled_in_mesh_order() == before);
+                // Two walks: ambient only, or exact Gouraud (its tiny triangles filled with no set-up: TinyDraw).
+                options.threads = 2;
+                MeshOrderWalks two(2);
+                before = detail::passes_filled_in_mesh_order();
+                render(small, options);
+                const bool walks = !lit || (shader == Shader::gouraud && !seed);
+                CHECK(detail::passes_filled_in_mesh_order() == before + (walks ? 1 : 0));
+            }
         }
     }
 }
