@@ -773,6 +773,12 @@ PHONGRAST_FILL_INLINE void fill_tiny_samples(const TinyDraw<Real>& draw, FillTar
     }
 }
 
+/// fill_flat() for a TinyDraw: corner[0] is the triangle's colour.
+template <typename Real, bool Perspective>
+void fill_tiny_flat(const TinyDraw<Real>& draw, FillTarget<Real>& target, const FillConstants<Real>&) {
+    fill_tiny_samples<Real, Perspective>(draw, target, [&](const Real*) { return *draw.corner[0]; });
+}
+
 /// fill_lit() for a TinyDraw: corner[i] is the lit colour.
 template <typename Real, bool Perspective>
 void fill_tiny_lit(const TinyDraw<Real>& draw, FillTarget<Real>& target, const FillConstants<Real>&) {
@@ -856,11 +862,12 @@ FillKernel<Real> pick_kernel_for_projection(const KernelChoice& c) {
     }
 }
 
-/// The TinyDraw kernel matching pick_kernel(c), where there is one: Gouraud
-/// untextured, Phong (specialised) with only the ambient term and varying colours.
+/// The TinyDraw kernel matching pick_kernel(c), where there is one: flat and
+/// Gouraud untextured, Phong (specialised) with only the ambient term and varying colours.
 template <typename Real>
 TinyFillKernel<Real> pick_tiny_kernel(const KernelChoice& c) {
-    if (c.flat || c.textured) return nullptr;
+    if (c.textured) return nullptr;
+    if (c.flat) return c.perspective ? &fill_tiny_flat<Real, true> : &fill_tiny_flat<Real, false>;
     if (!c.phong) return c.perspective ? &fill_tiny_lit<Real, true> : &fill_tiny_lit<Real, false>;
     const EffectSet& e = c.effects;
     if (c.specialized && e.ambient && !e.diffuse && !e.specular && !c.uniform_color) {

@@ -214,7 +214,8 @@ struct TinyCoverage {
 
 /// A tiny triangle to fill: its coverage and, in coverage order, what the
 /// kernel interpolates at its corners (Gouraud: the lit colours; Phong
-/// ambient only: the vertex colours) and their depths z_c.
+/// ambient only: the vertex colours; flat: the triangle's colour, at corner 0)
+/// and their depths z_c.
 template <typename Real>
 struct TinyDraw {
     TinyCoverage coverage;

@@ -145,6 +145,16 @@ public:
     }
     const Vec3<Real>* same_lit() const { return same_lit_ ? &*same_lit_ : nullptr; }
 
+    /// Flat, untextured: the colour run() gives drawn triangle `source`'s
+    /// draws, lit and counted as there (the caller fills it: TinyDraw).
+    Vec3<Real> flat_lit(std::uint32_t source) {
+        source_ = source;
+        surface_ = in_.triangle_surfaces != nullptr ? in_.triangle_surfaces[source] : 0;
+        const Triangle& tri = in_.scene.mesh.triangles[source];
+        ++counts_.lit_points;
+        return same_lit_ ? *same_lit_ : flat_color(tri, centroid_if_lit_there(tri), shader());
+    }
+
 private:
     /// The triangle's centroid (camera space) where flat shading or the
     /// seed's light vectors light at it; else zero, unread, and the vertex
@@ -759,14 +769,15 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     // Tiny covered triangles straight from the screen to the fill, where
     // the kernel has a TinyDraw twin and set-up would take the corners'
     // values as they are: Gouraud's lit per vertex (not the seed's, lit per
-    // triangle), Phong's vertex colours.
-    const bool gouraud = input.scene.shader == Shader::gouraud;
+    // triangle), Phong's vertex colours; or flat's colour, lit as run() lights it.
+    const bool gouraud = input.scene.shader == Shader::gouraud, flat = input.scene.shader == Shader::flat;
     const bool fills_tiny = screened && fill.tiny_kernel != nullptr && !batched &&
-                            (gouraud ? owned_setup.lit_per_vertex() : input.scene.shader == Shader::phong);
+                            (!gouraud || owned_setup.lit_per_vertex()) && (!flat || input.textures == nullptr);
     const Vec3<Real>* const same_lit = owned_setup.same_lit();
     TinyCoverageBlock tiny_block;
     TinyDraw<Real> tiny;
     tiny.surface = 0;
+    Vec3<Real> flat_colour(Real(0));
     for (std::size_t chunk = 0; chunk < chunks && !progress.cancelled(); ++chunk) {
         const std::size_t end = std::min(triangles.size(), (chunk + 1) * kSetupChunk);
         ScreenedBlock screening(screen_input, end, fills_tiny ? &tiny_block : nullptr);
@@ -817,6 +828,10 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
                         const Varyings<Real>& v = varyings[corners[i]];
                         tiny.corner[i] = !gouraud ? &v.color : same_lit != nullptr ? same_lit : &v.lit;
                         tiny.depth[i] = static_cast<Real>(screen[corners[i]].depth);
+                    }
+                    if (flat) {
+                        flat_colour = (owned ? owned_setup : shared_setup).flat_lit(static_cast<std::uint32_t>(t));
+                        tiny.corner[0] = &flat_colour;
                     }
                     if (input.triangle_surfaces != nullptr) tiny.surface = input.triangle_surfaces[t];
                     if (fill.ranked) {

@@ -230,8 +230,8 @@ TEST_CASE("the fill in mesh order supersamples as painter's fill does") {
 TEST_CASE("tiny triangles filled straight from the coverage screen paint painter's picture") {
     // A dense sphere on 48 x 40 pixels: most triangles' boxes hold at most 2 x 2
     // centres. The walk fills those the screen finds covered from its TinyDraw,
-    // with no set-up (exact Gouraud, lit or not; Phong ambient with vertex
-    // colours, specialised): the same bits and counts as set-up and its fill,
+    // with no set-up (flat and exact Gouraud, lit or not; Phong ambient with
+    // vertex colours, specialised): the same bits and counts as set-up and its fill,
     // in every walk split, precision, instruction set and camera model.
     Scene scene = coloured_sphere_scene();
     scene.mesh = test_meshes::uv_sphere(90, 90, 1.0);
@@ -246,13 +246,14 @@ TEST_CASE("tiny triangles filled straight from the coverage screen paint painter
     for (const Camera& camera : {pinhole, parallel}) {
         scene.camera = camera;
         for (const auto& [shader, lighting] : {std::pair{Shader::gouraud, full}, std::pair{Shader::gouraud, ambient},
-                                               std::pair{Shader::phong, ambient}}) {
+                                               std::pair{Shader::phong, ambient}, std::pair{Shader::flat, full},
+                                               std::pair{Shader::flat, ambient}}) {
             scene.shader = shader;
             scene.lighting = lighting;
             for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
                 if (shader == Shader::phong && !mode.options.specialize_effects) continue;  // batches: sorted
                 // The seed's Gouraud lights corners per triangle in set-up: none without it.
-                const bool tiny = shader == Shader::phong || mode.options.light_vectors != LightVectors::triangle_centroid;
+                const bool tiny = shader != Shader::gouraud || mode.options.light_vectors != LightVectors::triangle_centroid;
                 for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
                     if (!detail::kernel_isa_available(isa)) continue;  // no AVX2: the baseline alone
                     detail::override_kernel_isa(isa);
@@ -365,7 +366,7 @@ TEST_CASE("Phong lit per sample, extra outputs and the depth buffer do not fill 
     CHECK(detail::passes_filled_in_mesh_order() == before);
 }
 
-TEST_CASE("the fill in mesh order is taken for small triangles, lit flat and seed Gouraud on one thread") {
+TEST_CASE("the fill in mesh order is taken for small triangles, lit seed Gouraud on one thread") {
     for (const RenderOptions& mode : {RenderOptions::exact(), RenderOptions::seed()}) {
         for (Shader shader : {Shader::flat, Shader::gouraud}) {
             for (Lighting lighting : {Lighting::only_ambient(), Lighting::full()}) {
@@ -388,12 +389,12 @@ TEST_CASE("the fill in mesh order is taken for small triangles, lit flat and see
                 before = detail::passes_filled_in_mesh_order();
                 render(large, options);
                 CHECK(detail::passes_filled_in_mesh_order() == before);
-                // Two walks: ambient only, or exact Gouraud (its tiny triangles filled with no set-up: TinyDraw).
+                // Two walks: ambient only, or flat and exact Gouraud (their tiny triangles filled with no set-up: TinyDraw).
                 options.threads = 2;
                 MeshOrderWalks two(2);
                 before = detail::passes_filled_in_mesh_order();
                 render(small, options);
-                const bool walks = !lit || (shader == Shader::gouraud && !seed);
+                const bool walks = !lit || shader == Shader::flat || !seed;
                 CHECK(detail::passes_filled_in_mesh_order() == before + (walks ? 1 : 0));
             }
         }
