@@ -104,7 +104,8 @@ void time_walk_against_sorted(const phongrast::Scene& scene, const phongrast::Re
                 walked_passes > 0 ? "yes" : "no (sorted both)", same ? "yes" : "NO");
 }
 
-/// --screen-against-none: set-up with the coverage screen (coverage_screen.hpp)
+/// --screen-against-none: set-up with the coverage screen (coverage_screen.hpp;
+/// in the fill in mesh order also its tiny draws, filled with no set-up)
 /// against set-up of every triangle, timed in one process in rounds that
 /// alternate which goes first (after a render of a large mesh the next one
 /// starts with the other's memory in the caches); prints a Markdown row:
@@ -240,7 +241,8 @@ int main(int argc, char** argv) {
                  "time the fill in mesh order against the sorted fill in interleaved rounds in this process; print a "
                  "Markdown row: medians in ms, walk / sorted, whether it walked, same image");
     app.add_flag("--screen-against-none", s.screen_against_none,
-                 "time set-up with the coverage screen against set-up of every triangle in interleaved rounds in "
+                 "time set-up with the coverage screen (and the walk's tiny draws) against set-up of every "
+                 "triangle in interleaved rounds in "
                  "this process; print a Markdown row: wall and CPU-time medians in ms, screened / not, triangles that "
                  "cover no sample, same image and counts");
     app.add_flag("--stages", s.stages,

@@ -98,7 +98,8 @@ double sampled_samples_per_triangle(const std::vector<Triangle>& triangles, cons
 /// Whether this pass fills in mesh order: the plan allows it, no extra
 /// output names the last triangle, its triangles are small (mean area
 /// `samples_per_triangle`, at most kWalkMaxSamplesPerTriangle), and it is
-/// ambient only or fills in one walk (one thread).
+/// ambient only, fills tiny triangles from the coverage screen (flat, exact
+/// Gouraud: FillPlan::tiny_kernel) or fills in one walk (one thread).
 template <typename Real>
 bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs, double samples_per_triangle);
 
