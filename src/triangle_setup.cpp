@@ -135,14 +135,14 @@ public:
     /// Counts a tiny triangle the walk filled from the screen's coverage (drawn, as run() counts it).
     void count_drawn() { ++counts_.drawn; }
 
-    /// What a drawn triangle's FillTriangle::lit holds at its corners when
-    /// they are lit per vertex, nothing per triangle (exact Gouraud, untextured):
-    /// the vertex's `lit`, or the one colour everywhere (returned; else null).
-    /// Whether that is so: lit_per_vertex().
+    /// Whether a drawn triangle's FillTriangle::lit are its corners' colours
+    /// lit per vertex, nothing lit per triangle (exact Gouraud, untextured):
+    /// each vertex's `lit`, or same_lit() where that is not null.
     bool lit_per_vertex() const {
         return in_.scene.shader == Shader::gouraud && in_.options.light_vectors != LightVectors::triangle_centroid &&
                !in_parts_;
     }
+    /// The one lit colour of every corner (same_lit_everywhere()), or null.
     const Vec3<Real>* same_lit() const { return same_lit_ ? &*same_lit_ : nullptr; }
 
     /// Flat, untextured: the colour run() gives drawn triangle `source`'s

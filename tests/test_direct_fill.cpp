@@ -232,7 +232,8 @@ TEST_CASE("tiny triangles filled straight from the coverage screen paint painter
     // centres. The walk fills those the screen finds covered from its TinyDraw,
     // with no set-up (flat and exact Gouraud, lit or not; Phong ambient with
     // vertex colours, specialised): the same bits and counts as set-up and its fill,
-    // in every walk split, precision, instruction set and camera model.
+    // in every walk split, precision, instruction set and camera model, with
+    // one material or two (each tiny draw's own: Phong's ambient factor, flat's light).
     Scene scene = coloured_sphere_scene();
     scene.mesh = test_meshes::uv_sphere(90, 90, 1.0);
     scene.mesh.colors.clear();
@@ -243,33 +244,43 @@ TEST_CASE("tiny triangles filled straight from the coverage screen paint painter
     const Camera pinhole = scene.camera;
     const Camera parallel = Camera::orthographic(pinhole.eye, pinhole.lookat, pinhole.up, 2.6, 2.6);
     const Lighting ambient = Lighting::only_ambient(), full = Lighting::full();
-    for (const Camera& camera : {pinhole, parallel}) {
-        scene.camera = camera;
-        for (const auto& [shader, lighting] : {std::pair{Shader::gouraud, full}, std::pair{Shader::gouraud, ambient},
-                                               std::pair{Shader::phong, ambient}, std::pair{Shader::flat, full},
-                                               std::pair{Shader::flat, ambient}}) {
-            scene.shader = shader;
-            scene.lighting = lighting;
-            for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
-                if (shader == Shader::phong && !mode.options.specialize_effects) continue;  // batches: sorted
-                // The seed's Gouraud lights corners per triangle in set-up: none without it.
-                const bool tiny = shader != Shader::gouraud || mode.options.light_vectors != LightVectors::triangle_centroid;
-                for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
-                    if (!detail::kernel_isa_available(isa)) continue;  // no AVX2: the baseline alone
-                    detail::override_kernel_isa(isa);
-                    INFO(to_string(shader) << (lighting.diffuse ? ", full lighting, " : ", ambient, ") << mode.name
-                                           << (camera.model == CameraModel::orthographic ? ", orthographic" : "")
-                                           << ", ISA " << detail::to_string(isa));
-                    const std::uint64_t before = detail::tiny_draws_filled();
-                    check_painters_picture(scene, mode.options);
-                    // Ten walked renders: each fills hundreds of tiny triangles, or none.
-                    if (tiny) {
-                        CHECK(detail::tiny_draws_filled() > before + 10 * 500);
-                    } else {
-                        CHECK(detail::tiny_draws_filled() == before);
+    FaceMaterial dark, light;
+    dark.coefficients.ka = glm::vec3(0.1f, 0.2f, 0.3f);
+    light.coefficients.ka = glm::vec3(0.9f, 0.8f, 0.7f);
+    std::vector<std::uint32_t> alternating;
+    for (std::size_t t = 0; t < scene.mesh.triangles.size(); ++t) alternating.push_back(t % 3 == 0 ? 1 : 0);
+    for (const bool two_materials : {false, true}) {
+        scene.mesh.materials = two_materials ? std::vector<FaceMaterial>{dark, light} : std::vector<FaceMaterial>{};
+        scene.mesh.face_materials = two_materials ? alternating : std::vector<std::uint32_t>{};
+        for (const Camera& camera : {pinhole, parallel}) {
+            scene.camera = camera;
+            for (const auto& [shader, lighting] : {std::pair{Shader::gouraud, full}, std::pair{Shader::gouraud, ambient},
+                                                   std::pair{Shader::phong, ambient}, std::pair{Shader::flat, full},
+                                                   std::pair{Shader::flat, ambient}}) {
+                scene.shader = shader;
+                scene.lighting = lighting;
+                for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+                    if (shader == Shader::phong && !mode.options.specialize_effects) continue;  // batches: sorted
+                    // The seed's Gouraud lights corners per triangle in set-up: none without it.
+                    const bool tiny = shader != Shader::gouraud || mode.options.light_vectors != LightVectors::triangle_centroid;
+                    for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
+                        if (!detail::kernel_isa_available(isa)) continue;  // no AVX2: the baseline alone
+                        detail::override_kernel_isa(isa);
+                        INFO(to_string(shader) << (lighting.diffuse ? ", full lighting, " : ", ambient, ") << mode.name
+                                               << (camera.model == CameraModel::orthographic ? ", orthographic" : "")
+                                               << (two_materials ? ", two materials" : "")
+                                               << ", ISA " << detail::to_string(isa));
+                        const std::uint64_t before = detail::tiny_draws_filled();
+                        check_painters_picture(scene, mode.options);
+                        // Ten walked renders: each fills hundreds of tiny triangles, or none.
+                        if (tiny) {
+                            CHECK(detail::tiny_draws_filled() > before + 10 * 500);
+                        } else {
+                            CHECK(detail::tiny_draws_filled() == before);
+                        }
                     }
+                    detail::override_kernel_isa(std::nullopt);
                 }
-                detail::override_kernel_isa(std::nullopt);
             }
         }
     }
