@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Times two builds of bench_speed_once against each other on the same scenes,
-# process after process in alternation (old, new, old, new, ...), so that a
+# process after process in alternation (old, new, new, old, ...), so that a
 # change in the machine's load hits both alike, and prints one Markdown row
 # per case: each build's median over the rounds of its per-process medians,
 # the ratio new / old, and whether the two images are identical (cmp of
@@ -48,7 +48,11 @@ while read -r scene shader mode threads; do
   : >"$scratch/new.txt"
   skipped=0
   for ((round = 0; round < rounds; ++round)); do
-    for side in old new; do
+    # Which goes first alternates too: on some VMs the second of two
+    # back-to-back processes runs slower (a copy against itself: 1.03-1.10).
+    sides="old new"
+    ((round % 2)) && sides="new old"
+    for side in $sides; do
       bin=$old_bin
       [ "$side" = new ] && bin=$new_bin
       if ! line=$("$bin" "${args[@]}" --dump "$scratch/$side.raw" 2>/dev/null); then

@@ -134,10 +134,8 @@ FillPlan<Real> plan_fill(const Scene& scene, const RenderOptions& options, const
     choice.effects = effects;
     choice.textured = textures != nullptr;
     plan.kernel = pick_fill_kernel<Real>(choice);
-    // The seed's Gouraud lights each triangle's corners in set-up: none is filled without it.
-    const bool seed_gouraud =
-        scene.shader == Shader::gouraud && options.light_vectors == LightVectors::triangle_centroid;
-    plan.tiny_kernel = seed_gouraud ? nullptr : pick_tiny_fill_kernel<Real>(choice);
+    plan.tiny_kernel = pick_tiny_fill_kernel<Real>(choice);
+    plan.seed_gouraud = scene.shader == Shader::gouraud && options.light_vectors == LightVectors::triangle_centroid;
     plan.effects = effects;
     plan.depth_test = options.visibility == Visibility::depth_buffer;
     plan.shade_visible_only = !plan.depth_test && overdraw_shades_visible_only(scene, options, effects);
@@ -282,7 +280,8 @@ bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs, double 
     // Gouraud's, whose tiny triangles the walk fills with no set-up (TinyDraw).
     const int forced_walks = mesh_order_fill_walks.load(std::memory_order_relaxed);
     const int walks = forced_walks > 0 ? forced_walks : tbb::this_task_arena::max_concurrency();
-    return walks == 1 || !(plan.effects.diffuse || plan.effects.specular) || plan.tiny_kernel != nullptr;
+    return walks == 1 || !(plan.effects.diffuse || plan.effects.specular) ||
+           (plan.tiny_kernel != nullptr && !plan.seed_gouraud);
 }
 
 template <typename Real>

@@ -12,7 +12,6 @@
 #include <limits>
 #include <vector>
 
-#include "chunk_arena.hpp"
 #include "fill_types.hpp"
 #include "shading.hpp"
 #include "vertex_stage.hpp"
@@ -35,8 +34,8 @@ void light_vertex_lanes_avx2(const PointShader<Real>& shader, const VertexMateri
 
 template <typename Real>
 void light_seed_corners_avx2(const PointShader<Real>& shader, const PendingSeedTriangle<Real>* pending,
-                             std::size_t count, ChunkVector<FillTriangle<Real>>& out) {
-    avx2::light_seed_corners(shader, pending, count, out);
+                             std::size_t count, Vec3<Real>* const* lit) {
+    avx2::light_seed_corners(shader, pending, count, lit);
 }
 
 #define PHONGRAST_INSTANTIATE_LIGHTING_AVX2(Real)                                                           \
@@ -44,7 +43,7 @@ void light_seed_corners_avx2(const PointShader<Real>& shader, const PendingSeedT
                                                 FrameVector<Varyings<Real>>&, std::size_t, std::size_t,      \
                                                 LightVectorsAt<Real>&);                                      \
     template void light_seed_corners_avx2<Real>(const PointShader<Real>&, const PendingSeedTriangle<Real>*, \
-                                                std::size_t, ChunkVector<FillTriangle<Real>>&);
+                                                std::size_t, Vec3<Real>* const*);
 PHONGRAST_INSTANTIATE_LIGHTING_AVX2(float)
 PHONGRAST_INSTANTIATE_LIGHTING_AVX2(double)
 #undef PHONGRAST_INSTANTIATE_LIGHTING_AVX2

@@ -20,11 +20,11 @@ void light_vertex_lanes_dispatched(const PointShader<Real>& shader, const Vertex
 
 template <typename Real>
 void light_seed_corners_dispatched(const PointShader<Real>& shader, const PendingSeedTriangle<Real>* pending,
-                                   std::size_t count, ChunkVector<FillTriangle<Real>>& out) {
+                                   std::size_t count, Vec3<Real>* const* lit) {
 #if PHONGRAST_HAVE_AVX2_KERNELS
-    if (kernel_isa() == KernelIsa::avx2) return light_seed_corners_avx2(shader, pending, count, out);
+    if (kernel_isa() == KernelIsa::avx2) return light_seed_corners_avx2(shader, pending, count, lit);
 #endif
-    light_seed_corners(shader, pending, count, out);
+    light_seed_corners(shader, pending, count, lit);
 }
 
 #define PHONGRAST_INSTANTIATE_LIGHTING_DISPATCH(Real)                                                            \
@@ -32,7 +32,7 @@ void light_seed_corners_dispatched(const PointShader<Real>& shader, const Pendin
                                                       FrameVector<Varyings<Real>>&, std::size_t, std::size_t,      \
                                                       LightVectorsAt<Real>&);                                      \
     template void light_seed_corners_dispatched<Real>(const PointShader<Real>&, const PendingSeedTriangle<Real>*, \
-                                                      std::size_t, ChunkVector<FillTriangle<Real>>&);
+                                                      std::size_t, Vec3<Real>* const*);
 PHONGRAST_INSTANTIATE_LIGHTING_DISPATCH(float)
 PHONGRAST_INSTANTIATE_LIGHTING_DISPATCH(double)
 #undef PHONGRAST_INSTANTIATE_LIGHTING_DISPATCH

@@ -8,45 +8,45 @@
 #include <cstring>
 #include <vector>
 
-#include "chunk_arena.hpp"
-#include "fill_types.hpp"
 #include "lanes_isa.hpp"
 #include "shade_lanes.hpp"
+#include "varyings.hpp"
 
 namespace phongrast::detail {
 
 /// Triangles whose corners are lit together.
 constexpr std::size_t kSeedBatch = 16;
 
-/// A whole triangle's draw waiting for its corners' colours.
+/// A whole triangle waiting for its corners' colours.
 template <typename Real>
 struct PendingSeedTriangle {
-    std::size_t draw;     ///< in the chunk's draws
-    Vec3<Real> centroid;  ///< camera space: where the seed takes its light vectors
+    const Varyings<Real>* corner[3];  ///< in its draw's (coverage) order
+    Vec3<Real> centroid;              ///< camera space: where the seed takes its light vectors
 };
+
 
 /// light_seed_corners() compiled for the instruction set kernel_isa() names,
 /// the fill's (lighting_dispatch.cpp).
 template <typename Real>
 void light_seed_corners_dispatched(const PointShader<Real>& shader, const PendingSeedTriangle<Real>* pending,
-                                   std::size_t count, ChunkVector<FillTriangle<Real>>& out);
+                                   std::size_t count, Vec3<Real>* const* lit);
 
 #if PHONGRAST_HAVE_AVX2_KERNELS
 /// light_seed_corners() compiled for AVX2 (lighting_avx2.cpp); call only
 /// when kernel_isa() is KernelIsa::avx2.
 template <typename Real>
 void light_seed_corners_avx2(const PointShader<Real>& shader, const PendingSeedTriangle<Real>* pending,
-                             std::size_t count, ChunkVector<FillTriangle<Real>>& out);
+                             std::size_t count, Vec3<Real>* const* lit);
 #endif
 
 inline namespace PHONGRAST_LANES_ISA {
 
 /// Lights the corners of pending[0 .. count-1] (count from 1 to kSeedBatch)
-/// into their draws' `lit`: the vectors at each centroid by
+/// into lit[0 .. count-1] (three corners each, in their order): the vectors at each centroid by
 /// light_vectors_lanes(), then every corner by shade_with_lanes().
 template <typename Real>
 void light_seed_corners(const PointShader<Real>& shader, const PendingSeedTriangle<Real>* pending,
-                        std::size_t count, ChunkVector<FillTriangle<Real>>& out) {
+                        std::size_t count, Vec3<Real>* const* lit) {
     // Lane i * kSeedBatch + p: corner i of pending triangle p (blocks of
     // corners: a triangle's vectors are copied to its corners a block at a time).
     constexpr std::size_t N = 3 * kSeedBatch;
@@ -76,16 +76,14 @@ void light_seed_corners(const PointShader<Real>& shader, const PendingSeedTriang
     in.to_light = vectors;
     in.to_eye = &to_eye;
     for (std::size_t l = 0; l < N; ++l) {
-        const Varyings<Real>& corner = *out[triangle(l).draw].v[l / kSeedBatch];
+        const Varyings<Real>& corner = *triangle(l).corner[l / kSeedBatch];
         in.normal.set(l, corner.normal);
         in.color.set(l, corner.color);
     }
-    AxisLanes<Real, N> lit;
-    shade_with_lanes(shader, in, lit);
+    AxisLanes<Real, N> lit_lanes;
+    shade_with_lanes(shader, in, lit_lanes);
     for (std::size_t p = 0; p < count; ++p) {
-        for (std::size_t corner = 0; corner < 3; ++corner) {
-            out[pending[p].draw].lit[corner] = lit.get(corner * kSeedBatch + p);
-        }
+        for (std::size_t corner = 0; corner < 3; ++corner) lit[p][corner] = lit_lanes.get(corner * kSeedBatch + p);
     }
 }
 

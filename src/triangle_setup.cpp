@@ -135,6 +135,18 @@ public:
     /// Counts a tiny triangle the walk filled from the screen's coverage (drawn, as run() counts it).
     void count_drawn() { ++counts_.drawn; }
 
+    /// Seed Gouraud, batched (batch_seed_corners()): notes tiny triangle
+    /// `source`, whose corners in coverage order are `corners`, in the batch
+    /// as set_up_whole() notes a whole triangle's draw, counted as there, and
+    /// lights the batch when full. Returns its slot (SeedCornerBatch::lit()).
+    std::size_t batch_tiny_corners(std::uint32_t source, const Varyings<Real>* const (&corners)[3]) {
+        counts_.lit_points += 3;
+        const std::size_t slot = seed_batch_->add(corners, centroid_if_lit_there(in_.scene.mesh.triangles[source]),
+                                                  SeedCornerBatch<Real>::kNoDraw);
+        if (seed_batch_->full()) seed_batch_->light(in_.shader, out_);
+        return slot;
+    }
+
     /// Whether a drawn triangle's FillTriangle::lit are its corners' colours
     /// lit per vertex, nothing lit per triangle (exact Gouraud, untextured):
     /// each vertex's `lit`, or same_lit() where that is not null.
@@ -237,9 +249,9 @@ private:
                 counts_.lit_points += 3;  // lit like the corners below, to the colour set_up_piece() wrote
             } else if (seed_batch_ != nullptr) {
                 counts_.lit_points += 3;
-                const bool full = seed_batch_->add(out_.size(), centroid);
+                seed_batch_->add(draw.v, centroid, out_.size());
                 out_.push_back(draw);
-                if (full) seed_batch_->light(in_.shader, out_);
+                if (seed_batch_->full()) seed_batch_->light(in_.shader, out_);
                 return;
             } else {
                 // Lit copies of the corners: light_corners() writes their `lit`, the mesh's vertices stay as they are.
@@ -742,13 +754,16 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     // draws wait in `out` (queued below) until then, and are filled in mesh order.
     SeedCornerBatch<Real> seed_batch;
     const bool batched = owned_setup.batch_seed_corners(seed_batch) && shared_setup.batch_seed_corners(seed_batch);
+    // A queued triangle is its draws in `out`, or a tiny one (tiny_queue).
     struct QueuedTriangle {
         std::size_t first_draw, end_draw;
         std::uint64_t key;
         std::uint32_t tie;
+        int tiny;  ///< index in tiny_queue, or -1
     };
     QueuedTriangle queue[kSeedBatch];
-    std::size_t queued = 0;
+    TinyDraw<Real> tiny_queue[kSeedBatch];
+    std::size_t queued = 0, tiny_queued = 0;
     const auto fill_queued = [&] {
         owned_setup.light_batched_corners();  // both share seed_batch: lights every queued draw
         for (std::size_t q = 0; q < queued; ++q) {
@@ -756,11 +771,17 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
                 target.key = queue[q].key;
                 target.tie = queue[q].tie;
             }
+            if (queue[q].tiny >= 0) {
+                fill.tiny_kernel(tiny_queue[queue[q].tiny], target, *fill.constants);
+                continue;
+            }
             for (std::size_t d = queue[q].first_draw; d < queue[q].end_draw; ++d) {
                 fill.kernel(out[d], target, *fill.vectors, *fill.constants);
             }
         }
+        scratch.tiny_draws += tiny_queued;
         queued = 0;
+        tiny_queued = 0;
         out.clear();
         clip_vertices.clear();
     };
@@ -768,11 +789,13 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     const bool screened = owned_setup.screens();
     // Tiny covered triangles straight from the screen to the fill, where
     // the kernel has a TinyDraw twin and set-up would take the corners'
-    // values as they are: Gouraud's lit per vertex (not the seed's, lit per
-    // triangle), Phong's vertex colours; or flat's colour, lit as run() lights it.
+    // values as they are: Gouraud's lit per vertex, Phong's vertex colours;
+    // or lit as run() lights them: flat's colour, the seed's Gouraud corners
+    // (queued with the batch, as set-up's draws are).
     const bool gouraud = input.scene.shader == Shader::gouraud, flat = input.scene.shader == Shader::flat;
-    const bool fills_tiny = screened && fill.tiny_kernel != nullptr && !batched &&
-                            (!gouraud || owned_setup.lit_per_vertex()) && (!flat || input.textures == nullptr);
+    const bool fills_tiny = screened && fill.tiny_kernel != nullptr &&
+                            (!gouraud || owned_setup.lit_per_vertex() || batched) &&
+                            (!flat || input.textures == nullptr);
     const Vec3<Real>* const same_lit = owned_setup.same_lit();
     TinyCoverageBlock tiny_block;
     TinyDraw<Real> tiny;
@@ -834,10 +857,29 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
                         tiny.corner[0] = &flat_colour;
                     }
                     if (input.triangle_surfaces != nullptr) tiny.surface = input.triangle_surfaces[t];
+                    std::uint64_t key = 0;
+                    std::uint32_t tie = 0;
                     if (fill.ranked) {
-                        target.key = painter_key(tri, screen);
-                        target.tie = fill.original_triangle != nullptr ? fill.original_triangle[t]
-                                                                       : static_cast<std::uint32_t>(t);
+                        key = painter_key(tri, screen);
+                        tie = fill.original_triangle != nullptr ? fill.original_triangle[t]
+                                                                : static_cast<std::uint32_t>(t);
+                    }
+                    if (batched) {
+                        // The seed's corners: lit with the batch, filled in turn with the queued draws.
+                        const Varyings<Real>* const corner_varyings[3] = {&varyings[corners[0]], &varyings[corners[1]],
+                                                                          &varyings[corners[2]]};
+                        const std::size_t slot = (owned ? owned_setup : shared_setup)
+                                                     .batch_tiny_corners(static_cast<std::uint32_t>(t), corner_varyings);
+                        TinyDraw<Real>& queued_tiny = tiny_queue[tiny_queued];
+                        queued_tiny = tiny;
+                        for (int i = 0; i < 3; ++i) queued_tiny.corner[i] = seed_batch.lit(slot) + i;
+                        queue[queued++] = {0, 0, key, tie, static_cast<int>(tiny_queued++)};
+                        if (queued == kSeedBatch) fill_queued();
+                        continue;
+                    }
+                    if (fill.ranked) {
+                        target.key = key;
+                        target.tie = tie;
                     }
                     fill.tiny_kernel(tiny, target, *fill.constants);
                     ++scratch.tiny_draws;
@@ -862,7 +904,7 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
                 tie = fill.original_triangle != nullptr ? fill.original_triangle[t] : static_cast<std::uint32_t>(t);
             }
             if (batched) {
-                queue[queued++] = {first_draw, out.size(), key, tie};
+                queue[queued++] = {first_draw, out.size(), key, tie, -1};
                 if (queued == kSeedBatch) fill_queued();
                 continue;
             }

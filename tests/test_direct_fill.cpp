@@ -230,8 +230,8 @@ TEST_CASE("the fill in mesh order supersamples as painter's fill does") {
 TEST_CASE("tiny triangles filled straight from the coverage screen paint painter's picture") {
     // A dense sphere on 48 x 40 pixels: most triangles' boxes hold at most 2 x 2
     // centres. The walk fills those the screen finds covered from its TinyDraw,
-    // with no set-up (flat and exact Gouraud, lit or not; Phong ambient with
-    // vertex colours, specialised): the same bits and counts as set-up and its fill,
+    // with no set-up (flat and Gouraud, lit or not, the seed's corners lit in
+    // batches; Phong ambient with vertex colours, specialised): the same bits and counts as set-up and its fill,
     // in every walk split, precision, instruction set and camera model, with
     // one material or two (each tiny draw's own: Phong's ambient factor, flat's light).
     Scene scene = coloured_sphere_scene();
@@ -261,8 +261,11 @@ TEST_CASE("tiny triangles filled straight from the coverage screen paint painter
                 scene.lighting = lighting;
                 for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
                     if (shader == Shader::phong && !mode.options.specialize_effects) continue;  // batches: sorted
-                    // The seed's Gouraud lights corners per triangle in set-up: none without it.
-                    const bool tiny = shader != Shader::gouraud || mode.options.light_vectors != LightVectors::triangle_centroid;
+                    // The seed's Gouraud lights corners per triangle: in the walk's batches
+                    // (SeedCornerBatch) with a specialised shader of one material, else in set-up.
+                    const bool seed_gouraud =
+                        shader == Shader::gouraud && mode.options.light_vectors == LightVectors::triangle_centroid;
+                    const bool tiny = !seed_gouraud || (mode.options.specialize_effects && !two_materials);
                     for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
                         if (!detail::kernel_isa_available(isa)) continue;  // no AVX2: the baseline alone
                         detail::override_kernel_isa(isa);
