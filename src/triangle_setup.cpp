@@ -754,11 +754,29 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     // draws wait in `out` (queued below) until then, and are filled in mesh order.
     SeedCornerBatch<Real> seed_batch;
     const bool batched = owned_setup.batch_seed_corners(seed_batch) && shared_setup.batch_seed_corners(seed_batch);
+    // A triangle's painter's rank (FillTarget::key, tie), when the fill ranks.
+    struct Rank {
+        std::uint64_t key = 0;
+        std::uint32_t tie = 0;
+    };
+    const auto rank_of = [&](std::size_t t, const Triangle& tri) {
+        Rank rank;
+        if (fill.ranked) {
+            rank.key = painter_key(tri, screen);
+            rank.tie = fill.original_triangle != nullptr ? fill.original_triangle[t] : static_cast<std::uint32_t>(t);
+        }
+        return rank;
+    };
+    const auto rank_target = [&](const Rank& rank) {
+        if (fill.ranked) {
+            target.key = rank.key;
+            target.tie = rank.tie;
+        }
+    };
     // A queued triangle is its draws in `out`, or a tiny one (tiny_queue).
     struct QueuedTriangle {
         std::size_t first_draw, end_draw;
-        std::uint64_t key;
-        std::uint32_t tie;
+        Rank rank;
         int tiny;  ///< index in tiny_queue, or -1
     };
     QueuedTriangle queue[kSeedBatch];
@@ -767,10 +785,7 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     const auto fill_queued = [&] {
         owned_setup.light_batched_corners();  // both share seed_batch: lights every queued draw
         for (std::size_t q = 0; q < queued; ++q) {
-            if (fill.ranked) {
-                target.key = queue[q].key;
-                target.tie = queue[q].tie;
-            }
+            rank_target(queue[q].rank);
             if (queue[q].tiny >= 0) {
                 fill.tiny_kernel(tiny_queue[queue[q].tiny], target, *fill.constants);
                 continue;
@@ -857,13 +872,7 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
                         tiny.corner[0] = &flat_colour;
                     }
                     if (input.triangle_surfaces != nullptr) tiny.surface = input.triangle_surfaces[t];
-                    std::uint64_t key = 0;
-                    std::uint32_t tie = 0;
-                    if (fill.ranked) {
-                        key = painter_key(tri, screen);
-                        tie = fill.original_triangle != nullptr ? fill.original_triangle[t]
-                                                                : static_cast<std::uint32_t>(t);
-                    }
+                    const Rank rank = rank_of(t, tri);
                     if (batched) {
                         // The seed's corners: lit with the batch, filled in turn with the queued draws.
                         const Varyings<Real>* const corner_varyings[3] = {&varyings[corners[0]], &varyings[corners[1]],
@@ -873,14 +882,11 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
                         TinyDraw<Real>& queued_tiny = tiny_queue[tiny_queued];
                         queued_tiny = tiny;
                         for (int i = 0; i < 3; ++i) queued_tiny.corner[i] = seed_batch.lit(slot) + i;
-                        queue[queued++] = {0, 0, key, tie, static_cast<int>(tiny_queued++)};
+                        queue[queued++] = {0, 0, rank, static_cast<int>(tiny_queued++)};
                         if (queued == kSeedBatch) fill_queued();
                         continue;
                     }
-                    if (fill.ranked) {
-                        target.key = key;
-                        target.tie = tie;
-                    }
+                    rank_target(rank);
                     fill.tiny_kernel(tiny, target, *fill.constants);
                     ++scratch.tiny_draws;
                     continue;
@@ -897,21 +903,13 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
             const std::size_t first_draw = out.size();
             (owned ? owned_setup : shared_setup).run(static_cast<std::uint32_t>(t));
             if (out.size() == first_draw) continue;
-            std::uint64_t key = 0;
-            std::uint32_t tie = 0;
-            if (fill.ranked) {
-                key = painter_key(tri, screen);
-                tie = fill.original_triangle != nullptr ? fill.original_triangle[t] : static_cast<std::uint32_t>(t);
-            }
+            const Rank rank = rank_of(t, tri);
             if (batched) {
-                queue[queued++] = {first_draw, out.size(), key, tie, -1};
+                queue[queued++] = {first_draw, out.size(), rank, -1};
                 if (queued == kSeedBatch) fill_queued();
                 continue;
             }
-            if (fill.ranked) {
-                target.key = key;
-                target.tie = tie;
-            }
+            rank_target(rank);
             for (const FillTriangle<Real>& draw : out) fill.kernel(draw, target, *fill.vectors, *fill.constants);
         }
         if (batched) fill_queued();
