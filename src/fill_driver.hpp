@@ -43,8 +43,8 @@ struct FillPlan {
     FillKernel<Real> kernel = nullptr;
     /// The kernel's TinyDraw twin (pick_tiny_fill_kernel()), for the fill in mesh order; may be null.
     TinyFillKernel<Real> tiny_kernel = nullptr;
-    /// Gouraud with the seed's light vectors: corners lit per triangle (in set-up, or for
-    /// tiny draws in the walk's batches), which the walks at two threads repeat for their shared triangles.
+    /// Gouraud with the seed's light vectors (corners lit per triangle, in
+    /// batches): walks at one thread only (fills_in_mesh_order()).
     bool seed_gouraud = false;
     FillConstants<Real> constants;
     bool depth_test = false;         ///< Visibility::depth_buffer
@@ -102,8 +102,8 @@ double sampled_samples_per_triangle(const std::vector<Triangle>& triangles, cons
 /// output names the last triangle, its triangles are small (mean area
 /// `samples_per_triangle`, at most kWalkMaxSamplesPerTriangle), and it is
 /// ambient only, fills tiny triangles from the coverage screen (flat, exact
-/// Gouraud: FillPlan::tiny_kernel; not the seed's Gouraud, whose walks repeat
-/// its corners' lighting for shared triangles) or fills in one walk (one thread).
+/// Gouraud: FillPlan::tiny_kernel; not the seed's Gouraud, measured no faster
+/// so) or fills in one walk (one thread).
 template <typename Real>
 bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs, double samples_per_triangle);
 

@@ -24,7 +24,6 @@ struct PendingSeedTriangle {
     Vec3<Real> centroid;              ///< camera space: where the seed takes its light vectors
 };
 
-
 /// light_seed_corners() compiled for the instruction set kernel_isa() names,
 /// the fill's (lighting_dispatch.cpp).
 template <typename Real>
@@ -42,8 +41,8 @@ void light_seed_corners_avx2(const PointShader<Real>& shader, const PendingSeedT
 inline namespace PHONGRAST_LANES_ISA {
 
 /// Lights the corners of pending[0 .. count-1] (count from 1 to kSeedBatch)
-/// into lit[0 .. count-1] (three corners each, in their order): the vectors at each centroid by
-/// light_vectors_lanes(), then every corner by shade_with_lanes().
+/// into lit[0 .. count-1] (three corners each, in their order): the vectors
+/// at each centroid by light_vectors_lanes(), then every corner by shade_with_lanes().
 template <typename Real>
 void light_seed_corners(const PointShader<Real>& shader, const PendingSeedTriangle<Real>* pending,
                         std::size_t count, Vec3<Real>* const* lit) {

@@ -231,8 +231,8 @@ TEST_CASE("tiny triangles filled straight from the coverage screen paint painter
     // A dense sphere on 48 x 40 pixels: most triangles' boxes hold at most 2 x 2
     // centres. The walk fills those the screen finds covered from its TinyDraw,
     // with no set-up (flat and Gouraud, lit or not, the seed's corners lit in
-    // batches; Phong ambient with vertex colours, specialised): the same bits and counts as set-up and its fill,
-    // in every walk split, precision, instruction set and camera model, with
+    // batches; Phong ambient with vertex colours, specialised): the same bits
+    // and counts as set-up and its fill, in every walk split, precision, instruction set and camera model, with
     // one material or two (each tiny draw's own: Phong's ambient factor, flat's light).
     Scene scene = coloured_sphere_scene();
     scene.mesh = test_meshes::uv_sphere(90, 90, 1.0);
