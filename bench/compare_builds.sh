@@ -13,10 +13,11 @@
 # `cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DPHONGRAST_BUILD_BENCH=ON
 # -DPHONGRAST_BUILD_TESTS=OFF -DPHONGRAST_BUILD_APPS=OFF -DPHONGRAST_INSTALL=OFF`
 # and `cmake --build build/bench --target bench_speed_once`). ROUNDS: default 5.
-# CASES (environment) overrides the cases: lines of "scene shader mode threads".
+# CASES (environment) overrides the cases: lines of "scene shader mode threads
+# [lighting]" (lighting as --lighting names it, e.g. ambient; default the scene's).
 set -euo pipefail
 
-[ $# -ge 2 ] || { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+[ $# -ge 2 ] || { sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 old_bin=$1
 new_bin=$2
 rounds=${3:-5}
@@ -41,9 +42,13 @@ median() { sort -g | awk '{ v[NR] = $1 } END { if (NR == 0) { print "nan"; exit 
 
 echo "| scene | shader | mode | threads | old ms | new ms | new / old | same image |"
 echo "|---|---|---|---:|---:|---:|---:|---|"
-while read -r scene shader mode threads; do
+while read -r scene shader mode threads lighting; do
   [ -n "$scene" ] || continue
   args=(--scene "$scene" --shader "$shader" --mode "$mode" --threads "$threads" --repeat 5 --warmup 1)
+  if [ -n "$lighting" ]; then
+    args+=(--lighting "$lighting")
+    shader="$shader ($lighting)"
+  fi
   : >"$scratch/old.txt"
   : >"$scratch/new.txt"
   skipped=0

@@ -121,6 +121,12 @@ struct PointShader {
         return shade_prepared(vectors, normal, color);
     }
 
+    /// Whether the result depends on the point's position and normal: not
+    /// for a specialised shader without diffuse or specular (ambient only, or
+    /// black), whose callers may then skip forming them (the same bits:
+    /// compute_vectors() and shade_terms() do not read them).
+    bool reads_position_and_normal() const { return !specialized || effects.normals; }
+
     /// The vectors operator() computes at `vector_origin`: computed once,
     /// they light several points there (a triangle's corners lit at its centroid).
     void compute_vectors(LightVectorsAt<Real>& vectors, const Vec3<Real>& vector_origin) const {

@@ -173,7 +173,7 @@ private:
     /// positions are not loaded at all.
     Vec3<Real> centroid_if_lit_there(const Triangle& tri) const {
         if ((in_.scene.shader != Shader::flat && in_.options.light_vectors != LightVectors::triangle_centroid) ||
-            same_lit_) {
+            same_lit_ || (in_.scene.shader != Shader::phong && !lights_at_points_read_them())) {
             return Vec3<Real>(Real(0));
         }
         const FrameVector<Varyings<Real>>& varyings = vertices_.varyings;
@@ -421,16 +421,31 @@ private:
         return in_.shader.shade_prepared(vectors_, Vec3<Real>(Real(0)), in_.fill_constants.color);
     }
 
+    /// Whether the shaders that light this triangle's points (its flat colour,
+    /// the seed's Gouraud corners; not Phong, whose fill kernel, chosen per
+    /// frame, may read the centroid) read the centroid and normals; an ambient-only
+    /// scene's do not, and then neither is formed (measured: the mean normal's
+    /// normalisation and the centroid were most of what made flat ambient
+    /// slower than Phong ambient on the 1.3M sphere).
+    bool lights_at_points_read_them() const {
+        if (in_.textures != nullptr && textured_face()) {
+            return in_.colour_part_shaders[surface_].reads_position_and_normal() ||
+                   in_.specular_part_shaders[surface_].reads_position_and_normal();
+        }
+        return shader().reads_position_and_normal();
+    }
+
     // Flat: one colour per triangle, lit at the centroid with the mean vertex
     // normal (renormalised) and the mean vertex colour.
     Vec3<Real> flat_color(const Triangle& tri, const Vec3<Real>& centroid, const PointShader<Real>& lighting) const {
         Vec3<Real> normal(Real(0)), color(Real(0));
+        const bool reads_normal = lighting.reads_position_and_normal();
         for (std::uint32_t index : tri) {
-            normal += vertices_.varyings[index].normal;
+            if (reads_normal) normal += vertices_.varyings[index].normal;
             color += vertices_.varyings[index].color;
         }
         const Vec3<Real> surface = in_.fill_constants.uniform_color ? in_.fill_constants.color : color / Real(3);
-        return lighting(vectors_, centroid, safe_normalize<Real>(normal), surface);
+        return lighting(vectors_, centroid, reads_normal ? safe_normalize<Real>(normal) : normal, surface);
     }
 
     // Gouraud with the seed's centroid vectors: lights the triangle's own

@@ -298,6 +298,20 @@ TEST_CASE("invalid scenes are rejected with the field named") {
         scene.mesh.normals[200000].y = 0.0f;
         CHECK_NOTHROW(render(scene));  // every block valid: no block reports its end as a bad element
     }
+    SECTION("the finiteness test takes every finite number, however large or small, and names the first bad one") {
+        // The largest doubles, subnormals and -0 pass; of two bad elements in
+        // one block of the parallel check, the first is named.
+        const double largest = std::numeric_limits<double>::max();
+        const double tiny = std::numeric_limits<double>::denorm_min();
+        Mesh mesh;
+        mesh.positions.assign(200000, {largest, -largest, tiny});
+        mesh.positions[7] = {-0.0, -tiny, 0.0};
+        mesh.triangles.assign(1, {0, 1, 2});
+        CHECK_NOTHROW(validate_mesh(mesh));
+        mesh.positions[131072 + 200].y = std::numeric_limits<double>::quiet_NaN();
+        mesh.positions[131072 + 37].z = -std::numeric_limits<double>::infinity();
+        CHECK_THROWS_WITH(validate_mesh(mesh), Catch::Contains("position of vertex 131109 is not finite"));
+    }
     SECTION("negative exponent") {
         scene.material.n = -1;
         CHECK_THROWS_WITH(render(scene), Catch::Contains("material.n"));
