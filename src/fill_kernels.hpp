@@ -651,15 +651,19 @@ void shade_and_write_pending(PendingPhongSamples<Real>& pending, FillTarget<Real
 /// with those of the triangles before and after it (PendingPhongSamples): the
 /// same colours, written in the same order. A target with nowhere to keep
 /// them (a caller filling one triangle at a time) has this triangle's
-/// samples shaded and written before the call returns.
-template <typename Real, bool Perspective, bool Ambient, bool Diffuse, bool Specular, bool UniformColor>
+/// samples shaded and written before the call returns. CentroidVectors: the
+/// seed's vectors, at the triangle's centroid, computed per sample (see
+/// add_pending_samples(); fill_phong_seed() chooses which triangles).
+template <typename Real, bool Perspective, bool Ambient, bool Diffuse, bool Specular, bool UniformColor,
+          bool CentroidVectors = false>
 void fill_phong_pending(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
                         const FillConstants<Real>& constants) {
     PendingPhongSamples<Real>* pending = target.pending;
     if (pending == nullptr) {
         PendingPhongSamples<Real> own;
         target.pending = &own;
-        fill_phong_pending<Real, Perspective, Ambient, Diffuse, Specular, UniformColor>(draw, target, vectors, constants);
+        fill_phong_pending<Real, Perspective, Ambient, Diffuse, Specular, UniformColor, CentroidVectors>(
+            draw, target, vectors, constants);
         finish_pending(target);
         target.pending = nullptr;
         return;
@@ -676,9 +680,37 @@ void fill_phong_pending(const FillTriangle<Real>& draw, FillTarget<Real>& target
     gather_sample_batches<Real, Perspective>(
         draw, target, [&] { return kSampleBatch - pending->count; },
         [&](int n, const Lanes<Real>* w, const Real* depth, const std::size_t* index) {
-            add_pending_samples<Real, UniformColor>(draw, n, w, depth, index, *pending);
+            add_pending_samples<Real, UniformColor, CentroidVectors>(draw, n, w, depth, index, *pending);
             if (pending->count == kSampleBatch) shade_and_write(*pending, target);
         });
+}
+
+/// Boxes of at most this many sample centres go through the pending batches
+/// with the seed's vectors computed per sample; larger ones compute them once.
+/// Measured on the Xeon (seed Phong, 1 thread, the limit varied in one build):
+/// every box pending was as fast as 100 on the 512x512 scenes and 125k, and
+/// 2-7% slower than 100 on suzanne and icosphere-9.7k at 2048x2048, where
+/// 100 and none pending were within 1%.
+inline constexpr int kMaxSeedPendingBox = 100;
+
+/// The seed's Phong (light vectors at the triangle's centroid). A small
+/// triangle's few samples join the pending batch (fill_phong_pending() with
+/// CentroidVectors), which shades 32 samples of many triangles at a time,
+/// their vectors computed per sample; a larger one's samples, after those
+/// waiting, are shaded with vectors computed once (fill_phong()). The same
+/// colours either way, written in the same order.
+template <typename Real, bool Perspective, bool Ambient, bool Diffuse, bool Specular, bool UniformColor>
+void fill_phong_seed(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
+                     const FillConstants<Real>& constants) {
+    const SnappedTriangle& box = draw.coverage;
+    const long centres = static_cast<long>(box.row_max - box.row_min + 1) * (box.column_max - box.column_min + 1);
+    if (centres <= kMaxSeedPendingBox) {
+        fill_phong_pending<Real, Perspective, Ambient, Diffuse, Specular, UniformColor, true>(draw, target, vectors,
+                                                                                             constants);
+        return;
+    }
+    finish_pending(target);
+    fill_phong<Real, Perspective, Ambient, Diffuse, Specular, false, UniformColor>(draw, target, vectors, constants);
 }
 
 /// Phong with neither diffuse nor specular needs no normal and no light: per
@@ -832,8 +864,8 @@ FillKernel<Real> pick_phong_vectors_color(const KernelChoice& c) {
         return c.uniform_color ? &fill_phong_pending<Real, Perspective, Ambient, Diffuse, Specular, true>
                                : &fill_phong_pending<Real, Perspective, Ambient, Diffuse, Specular, false>;
     }
-    return c.uniform_color ? &fill_phong<Real, Perspective, Ambient, Diffuse, Specular, false, true>
-                           : &fill_phong<Real, Perspective, Ambient, Diffuse, Specular, false, false>;
+    return c.uniform_color ? &fill_phong_seed<Real, Perspective, Ambient, Diffuse, Specular, true>
+                           : &fill_phong_seed<Real, Perspective, Ambient, Diffuse, Specular, false>;
 }
 
 template <typename Real, bool Perspective>

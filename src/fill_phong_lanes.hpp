@@ -601,10 +601,14 @@ void shade_phong_samples(const FillTriangle<Real>& draw, int n, const Lanes<Real
 
 /// Adds n samples of `draw` (weights w, depths, image indices) to `pending`
 /// after those waiting: their colour (unless one colour for all), normal and
-/// camera-space point, each interpolated as interpolate_lanes() does.
+/// camera-space point, each interpolated as interpolate_lanes() does; with
+/// CentroidVectors (the seed's light vectors) the point is the triangle's
+/// centroid instead, where shade_pending_phong() then computes each sample's
+/// vectors as LightVectorsAt::compute() does once per triangle (the same
+/// operations: normalize_lanes() is safe_normalize() lane by lane).
 /// Out of line: called once or twice per triangle, and inlined it would be
 /// copied into each of the kernels' many instantiations.
-template <typename Real, bool UniformColor>
+template <typename Real, bool UniformColor, bool CentroidVectors = false>
 PHONGRAST_NOINLINE void add_pending_samples(const FillTriangle<Real>& draw, int n, const Lanes<Real>* w,
                                             const Real* depth, const std::size_t* index,
                                             PendingPhongSamples<Real>& pending) {
@@ -621,7 +625,12 @@ PHONGRAST_NOINLINE void add_pending_samples(const FillTriangle<Real>& draw, int 
         for (int c = 0; c < 3; ++c) {
             if (!UniformColor) interpolate(draw.v[0]->color[c], draw.v[1]->color[c], draw.v[2]->color[c], pending.color[c]);
             interpolate(draw.v[0]->normal[c], draw.v[1]->normal[c], draw.v[2]->normal[c], pending.normal[c]);
-            interpolate(draw.v[0]->position[c], draw.v[1]->position[c], draw.v[2]->position[c], pending.point[c]);
+            if (CentroidVectors) {
+                const Real centroid = draw.centroid()[c];
+                for (int l = 0; l < lanes; ++l) pending.point[c][at + l] = centroid;
+            } else {
+                interpolate(draw.v[0]->position[c], draw.v[1]->position[c], draw.v[2]->position[c], pending.point[c]);
+            }
         }
         for (int l = 0; l < lanes; ++l) {
             pending.depth[at + l] = depth[l];
