@@ -687,11 +687,12 @@ void fill_phong_pending(const FillTriangle<Real>& draw, FillTarget<Real>& target
 
 /// Boxes of at most this many sample centres go through the pending batches
 /// with the seed's vectors computed per sample; larger ones compute them once.
-/// Measured on the Xeon (seed Phong, 1 thread, the limit varied in one build):
-/// every box pending was as fast as 100 on the 512x512 scenes and 125k, and
-/// 2-7% slower than 100 on suzanne and icosphere-9.7k at 2048x2048, where
-/// 100 and none pending were within 1%.
-inline constexpr int kMaxSeedPendingBox = 100;
+/// Measured on the Xeon (seed Phong, 1 thread, the limit varied in one build,
+/// alternating processes): 36 to 100 gained 15-20% on icosphere-125k and
+/// armadillo; every box pending lost 2-7% against none on suzanne and
+/// icosphere-9.7k at 2048x2048; on dolphins_colored (512x512) 100 lost 5%
+/// against none, 36 nothing.
+inline constexpr int kMaxSeedPendingBox = 36;
 
 /// The seed's Phong (light vectors at the triangle's centroid). A small
 /// triangle's few samples join the pending batch (fill_phong_pending() with
