@@ -217,20 +217,26 @@ void build_light_rig(const Scene& scene, const PhongMaterial& material, const Ca
 
 namespace {
 
-/// What shade_terms() computes for a specialised shader with neither diffuse
-/// nor specular (ambient only, or black), without its call and switch per
-/// vertex: the stage went from 5.6 to 3.0 ms on the 1.3M sphere's 655,362
-/// vertices (Gouraud, ambient only, 1 thread, the Xeon, `--stages`).
+/// Lights [begin, end) with a specialised shader that has neither diffuse nor
+/// specular (ambient only, or black): shade_terms() itself, its effect set
+/// chosen once for the block instead of a call and a switch per vertex. The
+/// stage went from 5.6 to 3.0 ms on the 1.3M sphere's 655,362 vertices
+/// (Gouraud, ambient only, 1 thread, the Xeon, `--stages`).
 template <typename Real>
 void light_vertices_ambient_only(const PointShader<Real>& shader, FrameVector<Varyings<Real>>& varyings,
-                                 std::size_t begin, std::size_t end) {
+                                 std::size_t begin, std::size_t end, const LightVectorsAt<Real>& unread_vectors) {
+    const LightRig<Real>& rig = *shader.rig;
     if (!shader.effects.ambient) {
-        for (std::size_t i = begin; i != end; ++i) varyings[i].lit = Vec3<Real>(Real(0));
+        for (std::size_t i = begin; i != end; ++i) {
+            varyings[i].lit = shade_terms<Real, false, false, false>(rig, unread_vectors, varyings[i].normal,
+                                                                     varyings[i].color);
+        }
         return;
     }
-    const Vec3<Real> factor = shader.rig->ambient_factor;
-    // Zero plus the product, as shade_terms() forms it (a -0 product becomes +0 there too).
-    for (std::size_t i = begin; i != end; ++i) varyings[i].lit = Vec3<Real>(Real(0)) + factor * varyings[i].color;
+    for (std::size_t i = begin; i != end; ++i) {
+        varyings[i].lit =
+            shade_terms<Real, true, false, false>(rig, unread_vectors, varyings[i].normal, varyings[i].color);
+    }
 }
 
 }  // namespace
@@ -253,7 +259,7 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
             return;
         }
         if (unlit) {
-            light_vertices_ambient_only(shader, varyings, begin, end);
+            light_vertices_ambient_only(shader, varyings, begin, end, vectors);
             return;
         }
         for (std::size_t i = begin; i != end; ++i) {
