@@ -255,6 +255,46 @@ PHONGRAST_FILL_INLINE void shade_span_lanes(const Real* q, const Real* dq, int c
     }
 }
 
+#if PHONGRAST_FILL_VECTOR_BYTES == 32
+/// Writes lanes [0, n) of a batch's three channels as n pixels of three
+/// floats: eight lanes at a time turned into 24 interleaved floats by
+/// shuffles within 128-bit halves, then written as three 32-byte stores, the
+/// last group's masked to its lanes (no pixel past the span is touched). The
+/// loop GCC made of the same copy wrote the last group's pixels one by one,
+/// a loop whose varying trip count mispredicted at most span ends.
+PHONGRAST_FILL_INLINE void store_pixels_interleaved(glm::vec3* pixels, int n, const float (*channel)[kSampleBatch]) {
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "pixels are three packed floats");
+    float* out = &pixels[0].x;
+    for (int start = 0; start < n; start += 8, out += 24) {
+        const __m256 r = _mm256_loadu_ps(channel[0] + start);
+        const __m256 g = _mm256_loadu_ps(channel[1] + start);
+        const __m256 b = _mm256_loadu_ps(channel[2] + start);
+        // Per 128-bit half (lanes 0-3, then 4-7): r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3.
+        const __m256 rg_lo = _mm256_unpacklo_ps(r, g), rg_hi = _mm256_unpackhi_ps(r, g);
+        const __m256 br_lo = _mm256_unpacklo_ps(b, r), br_hi = _mm256_unpackhi_ps(b, r);
+        const __m256 gb_lo = _mm256_unpacklo_ps(g, b), gb_hi = _mm256_unpackhi_ps(g, b);
+        const __m256 x0 = _mm256_shuffle_ps(rg_lo, br_lo, _MM_SHUFFLE(3, 0, 1, 0));
+        const __m256 x1 = _mm256_shuffle_ps(gb_lo, rg_hi, _MM_SHUFFLE(1, 0, 3, 2));
+        const __m256 x2 = _mm256_shuffle_ps(br_hi, gb_hi, _MM_SHUFFLE(3, 2, 3, 0));
+        // The lower halves hold pixels 0-3, the upper 4-7: put them in order.
+        const __m256 out0 = _mm256_permute2f128_ps(x0, x1, 0x20);
+        const __m256 out1 = _mm256_permute2f128_ps(x2, x0, 0x30);
+        const __m256 out2 = _mm256_permute2f128_ps(x1, x2, 0x31);
+        const int floats = 3 * std::min(8, n - start);
+        if (floats == 24) {
+            _mm256_storeu_ps(out, out0);
+            _mm256_storeu_ps(out + 8, out1);
+            _mm256_storeu_ps(out + 16, out2);
+        } else {
+            const __m256i index = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+            _mm256_maskstore_ps(out, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats), index), out0);
+            _mm256_maskstore_ps(out + 8, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats - 8), index), out1);
+            _mm256_maskstore_ps(out + 16, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats - 16), index), out2);
+        }
+    }
+}
+#endif
+
 /// Shades a span in batches (shade_span_lanes()) and writes every sample,
 /// or, given `owners` (the span's owner row, nearest first), only those it
 /// has claimed: whose owner is `self`.
@@ -267,7 +307,11 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
         [&](int start, int n, const float (*channel)[kSampleBatch], bool nonfinite) PHONGRAST_INLINE_LAMBDA {
         glm::vec3* batch_pixels = pixels + start;
         if (!nonfinite && owners == nullptr) {
+#if PHONGRAST_FILL_VECTOR_BYTES == 32
+            store_pixels_interleaved(batch_pixels, n, channel);
+#else
             for (int l = 0; l < n; ++l) batch_pixels[l] = glm::vec3(channel[0][l], channel[1][l], channel[2][l]);
+#endif
         } else {
             for (int l = 0; l < n; ++l) {
                 if (owners != nullptr && owners[start + l] != self) continue;

@@ -21,6 +21,8 @@
 #include <limits>
 #include <vector>
 
+#include <immintrin.h>
+
 #include "fill_dispatch.hpp"
 
 #define PHONGRAST_FILL_ISA avx2
