@@ -322,6 +322,57 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
     });
 }
 
+#if PHONGRAST_FILL_VECTOR_BYTES == 32
+/// Gouraud's span of 1 to 3 samples (under kMinLanesSpan) painted whole, in
+/// float: its weights, renormalisation and colours computed once in four
+/// lanes (one SSE vector each) instead of sample by sample (a division and
+/// an interpolation per sample, and the scalar loop's latency), and its
+/// pixels written by three masked stores. Lane by lane the operations of
+/// fill_samples()' loop with interpolate_lit(), in the same order, so the
+/// same bits; the lanes past the span are computed and never written.
+template <bool Perspective>
+PHONGRAST_FILL_INLINE void fill_short_span_lit(const FillTriangle<float>& draw, const float* q, const float* dq,
+                                               int count, glm::vec3* pixels, std::uint64_t& replaced) {
+    static_assert(kMinLanesSpan <= 5, "a short span fits four lanes");
+    const __m128 k = _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f);
+    __m128 w[3];
+    for (int i = 0; i < 3; ++i) w[i] = _mm_add_ps(_mm_set1_ps(q[i]), _mm_mul_ps(_mm_set1_ps(dq[i]), k));
+    if constexpr (Perspective) {
+        const __m128 depth = _mm_div_ps(_mm_set1_ps(1.0f), _mm_add_ps(_mm_add_ps(w[0], w[1]), w[2]));
+        for (int i = 0; i < 3; ++i) w[i] = _mm_mul_ps(w[i], depth);
+    }
+    __m128 colour[3];
+    for (int c = 0; c < 3; ++c) {
+        colour[c] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(w[0], _mm_set1_ps(draw.lit[0][c])),
+                                          _mm_mul_ps(w[1], _mm_set1_ps(draw.lit[1][c]))),
+                               _mm_mul_ps(w[2], _mm_set1_ps(draw.lit[2][c])));
+    }
+    const __m128 r = colour[0], g = colour[1], b = colour[2];
+    // finite_or_replaced()'s test, isfinite((r + g) + b), for the span's lanes.
+    const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_add_ps(_mm_add_ps(r, g), b));
+    const int nonfinite = _mm_movemask_ps(_mm_cmp_ps(magnitude, _mm_set1_ps(std::numeric_limits<float>::max()),
+                                                     _CMP_NLE_UQ)) & ((1 << count) - 1);
+    if (nonfinite != 0) {
+        alignas(16) float channel[3][4];
+        for (int c = 0; c < 3; ++c) _mm_store_ps(channel[c], colour[c]);
+        for (int l = 0; l < count; ++l) {
+            pixels[l] = finite_or_replaced(glm::vec3(channel[0][l], channel[1][l], channel[2][l]), replaced);
+        }
+        return;
+    }
+    // r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3, as store_pixels_interleaved() forms each half.
+    const __m128 x0 = _mm_shuffle_ps(_mm_unpacklo_ps(r, g), _mm_unpacklo_ps(b, r), _MM_SHUFFLE(3, 0, 1, 0));
+    const __m128 x1 = _mm_shuffle_ps(_mm_unpacklo_ps(g, b), _mm_unpackhi_ps(r, g), _MM_SHUFFLE(1, 0, 3, 2));
+    const __m128 x2 = _mm_shuffle_ps(_mm_unpackhi_ps(b, r), _mm_unpackhi_ps(g, b), _MM_SHUFFLE(3, 2, 3, 0));
+    const int floats = 3 * count;
+    const __m128i index = _mm_setr_epi32(0, 1, 2, 3);
+    float* first = &pixels[0].x;
+    _mm_maskstore_ps(first, _mm_cmpgt_epi32(_mm_set1_epi32(floats), index), x0);
+    _mm_maskstore_ps(first + 4, _mm_cmpgt_epi32(_mm_set1_epi32(floats - 4), index), x1);
+    _mm_maskstore_ps(first + 8, _mm_cmpgt_epi32(_mm_set1_epi32(floats - 8), index), x2);
+}
+#endif
+
 /// The rank test of the fill in mesh order: writes `colour` to sample k
 /// where painter's order draws this draw (rank `key`, then `tie`) after the
 /// one whose colour is there. `Ties`: the draws' ties must be compared (a
@@ -409,9 +460,9 @@ PHONGRAST_NOINLINE void fill_ranked_span(const Real* corner_depth, FillTarget<Re
 /// steps them by a constant per column. Long spans painted whole go through
 /// shade_lanes(n, w, out) instead (fill_span_lanes()), which must give lane
 /// for lane what shade(w) gives.
-template <typename Real, bool Perspective, typename Shade, typename ShadeLanes>
+template <typename Real, bool Perspective, typename Shade, typename ShadeLanes, typename ShortSpan = NoLanes>
 PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarget<Real>& target, Shade&& shade,
-                                        ShadeLanes&& shade_lanes) {
+                                        ShadeLanes&& shade_lanes, ShortSpan&& short_span = ShortSpan{}) {
     Image& image = target.image;
     for_each_weighted_span<Real, Perspective>(
         draw, target,
@@ -440,6 +491,14 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
                 fill_span_lanes<Real, Perspective>(q, dq, count, pixels, target.replaced, shade_lanes);
                 target.samples += static_cast<std::uint64_t>(count);
                 return;
+            }
+            if constexpr (!std::is_same_v<std::decay_t<ShortSpan>, NoLanes>) {
+                if (owners == nullptr && !target.depth_test) {
+                    glm::vec3* pixels = &image.pixels[row_start + static_cast<std::size_t>(first_column)];
+                    short_span(q, dq, count, pixels, target.replaced);
+                    target.samples += static_cast<std::uint64_t>(count);
+                    return;
+                }
             }
             if (owners != nullptr && count >= kMinLanesSpan) {
                 // The samples no nearer draw has claimed: a span hidden whole costs no shading.
@@ -490,9 +549,21 @@ PHONGRAST_FILL_INLINE void interpolate_lit_lanes(const FillTriangle<Real>& d, in
 template <typename Real, bool Perspective>
 void fill_lit(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
               const FillConstants<Real>&) {
-    fill_samples<Real, Perspective>(
-        draw, target, [&](const Real* w) { return interpolate_lit(draw, w); },
-        [&](int n, const Lanes<Real>* w, Lanes<Real>* out) { interpolate_lit_lanes(draw, n, w, out); });
+    const auto shade = [&](const Real* w) { return interpolate_lit(draw, w); };
+    const auto shade_lanes = [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
+        interpolate_lit_lanes(draw, n, w, out);
+    };
+#if PHONGRAST_FILL_VECTOR_BYTES == 32
+    if constexpr (std::is_same_v<Real, float>) {
+        fill_samples<Real, Perspective>(draw, target, shade, shade_lanes,
+                                        [&](const float* q, const float* dq, int count, glm::vec3* pixels,
+                                            std::uint64_t& replaced) PHONGRAST_INLINE_LAMBDA {
+            fill_short_span_lit<Perspective>(draw, q, dq, count, pixels, replaced);
+        });
+        return;
+    }
+#endif
+    fill_samples<Real, Perspective>(draw, target, shade, shade_lanes);
 }
 
 /// Flat: the triangle's one colour, written as is. (Interpolating it like
