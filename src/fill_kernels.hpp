@@ -323,16 +323,16 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
 }
 
 #if PHONGRAST_FILL_VECTOR_BYTES == 32
-/// Gouraud's span of 1 to 3 samples (under kMinLanesSpan) painted whole, in
-/// float: its weights, renormalisation and colours computed once in four
-/// lanes (one SSE vector each) instead of sample by sample (a division and
-/// an interpolation per sample, and the scalar loop's latency), and its
-/// pixels written by three masked stores. Lane by lane the operations of
-/// fill_samples()' loop with interpolate_lit(), in the same order, so the
-/// same bits; the lanes past the span are computed and never written.
+/// Gouraud's colours of a span's first four samples, in float, one SSE
+/// vector per channel: lane by lane the operations of fill_samples()' loop
+/// with interpolate_lit() (q + dq k, renormalised when perspective-correct,
+/// (w0 a + w1 b) + w2 c), in the same order, so the same bits. For spans of 1
+/// to 3 samples (under kMinLanesSpan): computed once in lanes instead of
+/// sample by sample (a division and an interpolation per sample, and the
+/// scalar loop's latency); the lanes past the span are never written.
 template <bool Perspective>
-PHONGRAST_FILL_INLINE void fill_short_span_lit(const FillTriangle<float>& draw, const float* q, const float* dq,
-                                               int count, glm::vec3* pixels, std::uint64_t& replaced) {
+PHONGRAST_FILL_INLINE void short_span_lit_colours(const FillTriangle<float>& draw, const float* q, const float* dq,
+                                                  __m128* colour) {
     static_assert(kMinLanesSpan <= 5, "a short span fits four lanes");
     const __m128 k = _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f);
     __m128 w[3];
@@ -341,18 +341,47 @@ PHONGRAST_FILL_INLINE void fill_short_span_lit(const FillTriangle<float>& draw, 
         const __m128 depth = _mm_div_ps(_mm_set1_ps(1.0f), _mm_add_ps(_mm_add_ps(w[0], w[1]), w[2]));
         for (int i = 0; i < 3; ++i) w[i] = _mm_mul_ps(w[i], depth);
     }
-    __m128 colour[3];
     for (int c = 0; c < 3; ++c) {
         colour[c] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(w[0], _mm_set1_ps(draw.lit[0][c])),
                                           _mm_mul_ps(w[1], _mm_set1_ps(draw.lit[1][c]))),
                                _mm_mul_ps(w[2], _mm_set1_ps(draw.lit[2][c])));
     }
-    const __m128 r = colour[0], g = colour[1], b = colour[2];
-    // finite_or_replaced()'s test, isfinite((r + g) + b), for the span's lanes.
-    const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_add_ps(_mm_add_ps(r, g), b));
+}
+
+/// finite_or_replaced()'s test, isfinite((r + g) + b), failed in any of the first `count` lanes.
+PHONGRAST_FILL_INLINE bool any_nonfinite_short(const __m128* colour, int count) {
+    const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_add_ps(_mm_add_ps(colour[0], colour[1]), colour[2]));
     const int nonfinite = _mm_movemask_ps(_mm_cmp_ps(magnitude, _mm_set1_ps(std::numeric_limits<float>::max()),
-                                                     _CMP_NLE_UQ)) & ((1 << count) - 1);
-    if (nonfinite != 0) {
+                                                     _CMP_NLE_UQ));
+    return (nonfinite & ((1 << count) - 1)) != 0;
+}
+
+/// Writes the four lanes' pixels where `lanes` (one 32-bit mask per lane) is set:
+/// r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3, as store_pixels_interleaved() forms each half.
+PHONGRAST_FILL_INLINE void store_short_span(glm::vec3* pixels, const __m128* colour, __m128i lanes) {
+    const __m128 r = colour[0], g = colour[1], b = colour[2];
+    const __m128 x0 = _mm_shuffle_ps(_mm_unpacklo_ps(r, g), _mm_unpacklo_ps(b, r), _MM_SHUFFLE(3, 0, 1, 0));
+    const __m128 x1 = _mm_shuffle_ps(_mm_unpacklo_ps(g, b), _mm_unpackhi_ps(r, g), _MM_SHUFFLE(1, 0, 3, 2));
+    const __m128 x2 = _mm_shuffle_ps(_mm_unpackhi_ps(b, r), _mm_unpackhi_ps(g, b), _MM_SHUFFLE(3, 2, 3, 0));
+    float* first = &pixels[0].x;
+    // Float j of the twelve belongs to pixel j / 3.
+    _mm_maskstore_ps(first, _mm_shuffle_epi32(lanes, _MM_SHUFFLE(1, 0, 0, 0)), x0);
+    _mm_maskstore_ps(first + 4, _mm_shuffle_epi32(lanes, _MM_SHUFFLE(2, 2, 1, 1)), x1);
+    _mm_maskstore_ps(first + 8, _mm_shuffle_epi32(lanes, _MM_SHUFFLE(3, 3, 3, 2)), x2);
+}
+
+/// Lanes 0 to count - 1 set.
+PHONGRAST_FILL_INLINE __m128i first_lanes(int count) {
+    return _mm_cmpgt_epi32(_mm_set1_epi32(count), _mm_setr_epi32(0, 1, 2, 3));
+}
+
+/// Gouraud's span of 1 to 3 samples painted whole (short_span_lit_colours()).
+template <bool Perspective>
+PHONGRAST_FILL_INLINE void fill_short_span_lit(const FillTriangle<float>& draw, const float* q, const float* dq,
+                                               int count, glm::vec3* pixels, std::uint64_t& replaced) {
+    __m128 colour[3];
+    short_span_lit_colours<Perspective>(draw, q, dq, colour);
+    if (any_nonfinite_short(colour, count)) {
         alignas(16) float channel[3][4];
         for (int c = 0; c < 3; ++c) _mm_store_ps(channel[c], colour[c]);
         for (int l = 0; l < count; ++l) {
@@ -360,16 +389,52 @@ PHONGRAST_FILL_INLINE void fill_short_span_lit(const FillTriangle<float>& draw, 
         }
         return;
     }
-    // r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3, as store_pixels_interleaved() forms each half.
-    const __m128 x0 = _mm_shuffle_ps(_mm_unpacklo_ps(r, g), _mm_unpacklo_ps(b, r), _MM_SHUFFLE(3, 0, 1, 0));
-    const __m128 x1 = _mm_shuffle_ps(_mm_unpacklo_ps(g, b), _mm_unpackhi_ps(r, g), _MM_SHUFFLE(1, 0, 3, 2));
-    const __m128 x2 = _mm_shuffle_ps(_mm_unpackhi_ps(b, r), _mm_unpackhi_ps(g, b), _MM_SHUFFLE(3, 2, 3, 0));
-    const int floats = 3 * count;
-    const __m128i index = _mm_setr_epi32(0, 1, 2, 3);
-    float* first = &pixels[0].x;
-    _mm_maskstore_ps(first, _mm_cmpgt_epi32(_mm_set1_epi32(floats), index), x0);
-    _mm_maskstore_ps(first + 4, _mm_cmpgt_epi32(_mm_set1_epi32(floats - 4), index), x1);
-    _mm_maskstore_ps(first + 8, _mm_cmpgt_epi32(_mm_set1_epi32(floats - 8), index), x2);
+    store_short_span(pixels, colour, first_lanes(count));
+}
+
+/// Gouraud's span of 1 to 3 samples in the fill in mesh order: its colours
+/// as fill_short_span_lit() computes them, each written where this draw
+/// ranks later than the colour there (write_if_ranked_later(), lane by lane:
+/// the keys compared unsigned, then, with `Ties`, the ties). False, with
+/// nothing written, if a colour is not finite: the caller then takes the
+/// sample-by-sample path, which counts the replaced channels.
+template <bool Ties, bool Perspective>
+PHONGRAST_FILL_INLINE bool fill_ranked_short_span_lit(const FillTriangle<float>& draw, FillTarget<float>& target,
+                                                      std::size_t start, int count, const float* q, const float* dq) {
+    __m128 colour[3];
+    short_span_lit_colours<Perspective>(draw, q, dq, colour);
+    if (any_nonfinite_short(colour, count)) return false;
+    const __m128i valid = first_lanes(count);
+    const __m256i valid_keys = _mm256_cvtepi32_epi64(valid);
+    long long* keys = reinterpret_cast<long long*>(target.rank_keys + start);
+    // Unsigned order as signed order: both sides with the top bit flipped.
+    const __m256i flip = _mm256_set1_epi64x(std::numeric_limits<long long>::min());
+    const __m256i held = _mm256_xor_si256(_mm256_maskload_epi64(keys, valid_keys), flip);
+    const __m256i mine = _mm256_xor_si256(_mm256_set1_epi64x(static_cast<long long>(target.key)), flip);
+    __m256i write;
+    if constexpr (Ties) {
+        int* ties = reinterpret_cast<int*>(target.rank_ties + start);
+        const __m128i flip_tie = _mm_set1_epi32(std::numeric_limits<int>::min());
+        const __m128i held_tie = _mm_xor_si128(_mm_maskload_epi32(ties, valid), flip_tie);
+        const __m128i later_tie =
+            _mm_cmpgt_epi32(_mm_xor_si128(_mm_set1_epi32(static_cast<int>(target.tie)), flip_tie), held_tie);
+        write = _mm256_or_si256(_mm256_cmpgt_epi64(mine, held),
+                                _mm256_and_si256(_mm256_cmpeq_epi64(mine, held), _mm256_cvtepi32_epi64(later_tie)));
+        write = _mm256_and_si256(write, valid_keys);
+    } else {
+        write = _mm256_andnot_si256(_mm256_cmpgt_epi64(held, mine), valid_keys);  // key >= held
+    }
+    // The 64-bit lane masks as 32-bit ones (each half of a lane is all ones or all zeros).
+    const __m128i lanes =
+        _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(write, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
+    _mm256_maskstore_epi64(keys, write, _mm256_set1_epi64x(static_cast<long long>(target.key)));
+    if constexpr (Ties) {
+        _mm_maskstore_epi32(reinterpret_cast<int*>(target.rank_ties + start), lanes,
+                            _mm_set1_epi32(static_cast<int>(target.tie)));
+    }
+    store_short_span(target.image.pixels.data() + start, colour, lanes);
+    target.samples += static_cast<std::uint64_t>(count);
+    return true;
 }
 
 /// Gouraud's span of any length painted whole, in float: eight samples at a
@@ -417,6 +482,27 @@ PHONGRAST_FILL_INLINE void fill_span_lit(const FillTriangle<float>& draw, const 
         store_pixels_interleaved(pixels + start, n, channel);
     }
 }
+
+/// fill_samples()' span writers for Gouraud in float (fill_lit()).
+template <bool Perspective>
+struct LitSpans {
+    const FillTriangle<float>& draw;
+
+    PHONGRAST_FILL_INLINE void whole(const float* q, const float* dq, int count, glm::vec3* pixels,
+                                     std::uint64_t& replaced) const {
+        if (count < kMinLanesSpan) {
+            fill_short_span_lit<Perspective>(draw, q, dq, count, pixels, replaced);
+        } else {
+            fill_span_lit<Perspective>(draw, q, dq, count, pixels, replaced);
+        }
+    }
+    template <bool Ties>
+    PHONGRAST_FILL_INLINE bool ranked_short(FillTarget<float>& target, std::size_t start, int count, const float* q,
+                                            const float* dq) const {
+        if (count >= kMinLanesSpan) return false;
+        return fill_ranked_short_span_lit<Ties, Perspective>(draw, target, start, count, q, dq);
+    }
+};
 #endif
 
 /// The rank test of the fill in mesh order: writes `colour` to sample k
@@ -505,9 +591,10 @@ PHONGRAST_NOINLINE void fill_ranked_span(const Real* corner_depth, FillTarget<Re
 /// there. Each span starts from weights derived from exact edge values and
 /// steps them by a constant per column. Long spans painted whole go through
 /// shade_lanes(n, w, out) instead (fill_span_lanes()), which must give lane
-/// for lane what shade(w) gives. A kernel with a whole-span writer of its own
-/// (`paint_span(q, dq, count, pixels, replaced)`, NoLanes if none) hands it
-/// every span painted whole, of any length, with the same duty.
+/// for lane what shade(w) gives. A kernel with span writers of its own
+/// (`paint_span`, NoLanes if none: LitSpans) hands them every span painted
+/// whole, of any length (whole()), and in the fill in mesh order the spans
+/// under kMinLanesSpan (ranked_short(), which may decline), with the same duty.
 template <typename Real, bool Perspective, typename Shade, typename ShadeLanes, typename PaintSpan = NoLanes>
 PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarget<Real>& target, Shade&& shade,
                                         ShadeLanes&& shade_lanes, PaintSpan&& paint_span = PaintSpan{}) {
@@ -530,13 +617,20 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
                     return;
                 }
             }
+            if constexpr (!std::is_same_v<std::decay_t<PaintSpan>, NoLanes>) {
+                const std::size_t start = row_start + static_cast<std::size_t>(first_column);
+                if (target.rank_ties != nullptr ? paint_span.template ranked_short<true>(target, start, count, q, dq)
+                                                : paint_span.template ranked_short<false>(target, start, count, q, dq)) {
+                    return;
+                }
+            }
             fill_ranked_span<Real, Perspective>(draw.depth, target, row_start, first_column, count, q, dq, shade);
             return;
         }
         if constexpr (!std::is_same_v<std::decay_t<PaintSpan>, NoLanes>) {
             if (owners == nullptr && !target.depth_test) {
                 glm::vec3* pixels = &image.pixels[row_start + static_cast<std::size_t>(first_column)];
-                paint_span(q, dq, count, pixels, target.replaced);
+                paint_span.whole(q, dq, count, pixels, target.replaced);
                 target.samples += static_cast<std::uint64_t>(count);
                 return;
             }
@@ -608,15 +702,7 @@ void fill_lit(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVec
     };
 #if PHONGRAST_FILL_VECTOR_BYTES == 32
     if constexpr (std::is_same_v<Real, float>) {
-        fill_samples<Real, Perspective>(draw, target, shade, shade_lanes,
-                                        [&](const float* q, const float* dq, int count, glm::vec3* pixels,
-                                            std::uint64_t& replaced) PHONGRAST_INLINE_LAMBDA {
-            if (count < kMinLanesSpan) {
-                fill_short_span_lit<Perspective>(draw, q, dq, count, pixels, replaced);
-            } else {
-                fill_span_lit<Perspective>(draw, q, dq, count, pixels, replaced);
-            }
-        });
+        fill_samples<Real, Perspective>(draw, target, shade, shade_lanes, LitSpans<Perspective>{draw});
         return;
     }
 #endif
