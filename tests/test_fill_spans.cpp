@@ -110,25 +110,32 @@ Scene fine_grid_scene() {
 }  // namespace
 
 TEST_CASE("short spans shaded in four lanes paint what sample-by-sample shading paints") {
-    for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
-        for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
-            if (!detail::kernel_isa_available(isa)) continue;
-            detail::override_kernel_isa(isa);
-            const Scene scene = fine_grid_scene();
-            RenderOptions painter = mode.options;
-            painter.visibility = Visibility::painter;
-            painter.overdraw = Overdraw::shade_all;
-            RenderOptions depth_buffer = mode.options;
-            depth_buffer.visibility = Visibility::depth_buffer;
-            const RenderResult batched = render(scene, painter);
-            const RenderResult one_by_one = render(scene, depth_buffer);
-            detail::override_kernel_isa(std::nullopt);
-            INFO(mode.name << (isa == detail::KernelIsa::avx2 ? ", AVX2" : ", baseline"));
-            // 4,608 triangles over ~10,000 samples: about two samples each.
-            REQUIRE(batched.stats.samples_shaded > 5000);
-            CHECK(batched.stats.samples_shaded == one_by_one.stats.samples_shaded);
-            CHECK(batched.stats.nonfinite_values_replaced == 0);
-            CHECK(same_bits(batched.image, one_by_one.image));
+    for (bool orthographic : {false, true}) {  // perspective-correct weights, then screen-linear ones
+        Scene scene = fine_grid_scene();
+        if (orthographic) {
+            const Camera pinhole = scene.camera;
+            scene.camera = Camera::orthographic(pinhole.eye, pinhole.lookat, pinhole.up, 2.4, 2.4);
+        }
+        for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+            for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
+                if (!detail::kernel_isa_available(isa)) continue;
+                detail::override_kernel_isa(isa);
+                RenderOptions painter = mode.options;
+                painter.visibility = Visibility::painter;
+                painter.overdraw = Overdraw::shade_all;
+                RenderOptions depth_buffer = mode.options;
+                depth_buffer.visibility = Visibility::depth_buffer;
+                const RenderResult batched = render(scene, painter);
+                const RenderResult one_by_one = render(scene, depth_buffer);
+                detail::override_kernel_isa(std::nullopt);
+                INFO(mode.name << (isa == detail::KernelIsa::avx2 ? ", AVX2" : ", baseline")
+                               << (orthographic ? ", orthographic" : ""));
+                // 4,608 triangles over ~10,000 samples: about two samples each.
+                REQUIRE(batched.stats.samples_shaded > 5000);
+                CHECK(batched.stats.samples_shaded == one_by_one.stats.samples_shaded);
+                CHECK(batched.stats.nonfinite_values_replaced == 0);
+                CHECK(same_bits(batched.image, one_by_one.image));
+            }
         }
     }
 }
