@@ -1,7 +1,9 @@
-// Long spans of a triangle painted whole are shaded in vector batches
-// (fill_kernels.hpp: fill_span_lanes()); spans the depth buffer tests are
-// shaded sample by sample. On triangles that do not overlap the two must
-// paint the same bits: this compares them where the spans are long.
+// Spans of a triangle painted whole are shaded in vector batches
+// (fill_kernels.hpp: fill_span_lanes()) or, for Gouraud in the AVX2 float
+// kernels, by its own span code (LitSpans: short spans in four lanes, long
+// ones eight at a time); spans the depth buffer tests are shaded sample by
+// sample. On triangles that do not overlap the two must paint the same bits:
+// this compares them where the spans are long and where they are 1-3 samples.
 #include <cstdint>
 #include <string>
 
@@ -32,6 +34,33 @@ Scene fan_scene() {
     return scene;
 }
 
+/// The scene painted in painter's order with every layer shaded (spans
+/// painted whole: the batches, or a kernel's own span code) and through the
+/// depth buffer (sample by sample), with kernels of `isa`.
+struct TwoFills {
+    RenderResult batched, one_by_one;
+};
+TwoFills render_both_ways(const Scene& scene, const RenderOptions& options, detail::KernelIsa isa) {
+    detail::override_kernel_isa(isa);
+    RenderOptions painter = options;
+    painter.visibility = Visibility::painter;
+    painter.overdraw = Overdraw::shade_all;
+    RenderOptions depth_buffer = options;
+    depth_buffer.visibility = Visibility::depth_buffer;
+    TwoFills fills{render(scene, painter), render(scene, depth_buffer)};
+    detail::override_kernel_isa(std::nullopt);
+    return fills;
+}
+
+/// The two fills shaded as many samples, all finite, into the same bits.
+void check_same(const TwoFills& fills) {
+    // Enough of the picture to matter goes through the spans painted whole.
+    REQUIRE(fills.batched.stats.samples_shaded > 5000);
+    CHECK(fills.batched.stats.samples_shaded == fills.one_by_one.stats.samples_shaded);
+    CHECK(fills.batched.stats.nonfinite_values_replaced == 0);
+    CHECK(same_bits(fills.batched.image, fills.one_by_one.image));
+}
+
 }  // namespace
 
 TEST_CASE("long spans shaded in batches paint what sample-by-sample shading paints") {
@@ -52,25 +81,13 @@ TEST_CASE("long spans shaded in batches paint what sample-by-sample shading pain
         for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
             for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
                 if (!detail::kernel_isa_available(isa)) continue;
-                detail::override_kernel_isa(isa);
                 Scene scene = fan_scene();
                 scene.shader = c.shader;
                 scene.lighting = c.lighting;
                 if (c.uniform_color) scene.mesh.colors.clear();
-                RenderOptions painter = mode.options;
-                painter.visibility = Visibility::painter;
-                painter.overdraw = Overdraw::shade_all;
-                RenderOptions depth_buffer = mode.options;
-                depth_buffer.visibility = Visibility::depth_buffer;
-                const RenderResult batched = render(scene, painter);
-                const RenderResult one_by_one = render(scene, depth_buffer);
-                detail::override_kernel_isa(std::nullopt);
                 INFO(c.name << ", " << mode.name << (isa == detail::KernelIsa::avx2 ? ", AVX2" : ", baseline"));
                 // Spans of 30 and more samples: most of the picture goes through the batches.
-                REQUIRE(batched.stats.samples_shaded > 5000);
-                CHECK(batched.stats.samples_shaded == one_by_one.stats.samples_shaded);
-                CHECK(batched.stats.nonfinite_values_replaced == 0);
-                CHECK(same_bits(batched.image, one_by_one.image));
+                check_same(render_both_ways(scene, mode.options, isa));
             }
         }
     }
@@ -119,22 +136,10 @@ TEST_CASE("short spans shaded in four lanes paint what sample-by-sample shading 
         for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
             for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
                 if (!detail::kernel_isa_available(isa)) continue;
-                detail::override_kernel_isa(isa);
-                RenderOptions painter = mode.options;
-                painter.visibility = Visibility::painter;
-                painter.overdraw = Overdraw::shade_all;
-                RenderOptions depth_buffer = mode.options;
-                depth_buffer.visibility = Visibility::depth_buffer;
-                const RenderResult batched = render(scene, painter);
-                const RenderResult one_by_one = render(scene, depth_buffer);
-                detail::override_kernel_isa(std::nullopt);
                 INFO(mode.name << (isa == detail::KernelIsa::avx2 ? ", AVX2" : ", baseline")
                                << (orthographic ? ", orthographic" : ""));
                 // 4,608 triangles over ~10,000 samples: about two samples each.
-                REQUIRE(batched.stats.samples_shaded > 5000);
-                CHECK(batched.stats.samples_shaded == one_by_one.stats.samples_shaded);
-                CHECK(batched.stats.nonfinite_values_replaced == 0);
-                CHECK(same_bits(batched.image, one_by_one.image));
+                check_same(render_both_ways(scene, mode.options, isa));
             }
         }
     }
