@@ -256,41 +256,44 @@ PHONGRAST_FILL_INLINE void shade_span_lanes(const Real* q, const Real* dq, int c
 }
 
 #if PHONGRAST_FILL_VECTOR_BYTES == 32
-/// Writes lanes [0, n) of a batch's three channels as n pixels of three
-/// floats: eight lanes at a time turned into 24 interleaved floats by
-/// shuffles within 128-bit halves, then written as three 32-byte stores, the
-/// last group's masked to its lanes (no pixel past the span is touched). The
-/// loop GCC made of the same copy wrote the last group's pixels one by one,
-/// a loop whose varying trip count mispredicted at most span ends.
+/// Writes eight lanes of three channels, the first n (1 to 8) of them, as n
+/// pixels of three floats from `out` on: turned into 24 interleaved floats by
+/// shuffles within 128-bit halves, then written as three 32-byte stores, a
+/// partial group's masked to its lanes (no pixel past them is touched).
+PHONGRAST_FILL_INLINE void store_group_interleaved(float* out, int n, __m256 r, __m256 g, __m256 b) {
+    // Per 128-bit half (lanes 0-3, then 4-7): r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3.
+    const __m256 rg_lo = _mm256_unpacklo_ps(r, g), rg_hi = _mm256_unpackhi_ps(r, g);
+    const __m256 br_lo = _mm256_unpacklo_ps(b, r), br_hi = _mm256_unpackhi_ps(b, r);
+    const __m256 gb_lo = _mm256_unpacklo_ps(g, b), gb_hi = _mm256_unpackhi_ps(g, b);
+    const __m256 x0 = _mm256_shuffle_ps(rg_lo, br_lo, _MM_SHUFFLE(3, 0, 1, 0));
+    const __m256 x1 = _mm256_shuffle_ps(gb_lo, rg_hi, _MM_SHUFFLE(1, 0, 3, 2));
+    const __m256 x2 = _mm256_shuffle_ps(br_hi, gb_hi, _MM_SHUFFLE(3, 2, 3, 0));
+    // The lower halves hold pixels 0-3, the upper 4-7: put them in order.
+    const __m256 out0 = _mm256_permute2f128_ps(x0, x1, 0x20);
+    const __m256 out1 = _mm256_permute2f128_ps(x2, x0, 0x30);
+    const __m256 out2 = _mm256_permute2f128_ps(x1, x2, 0x31);
+    if (n == 8) {
+        _mm256_storeu_ps(out, out0);
+        _mm256_storeu_ps(out + 8, out1);
+        _mm256_storeu_ps(out + 16, out2);
+        return;
+    }
+    const int floats = 3 * n;
+    const __m256i index = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    _mm256_maskstore_ps(out, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats), index), out0);
+    _mm256_maskstore_ps(out + 8, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats - 8), index), out1);
+    _mm256_maskstore_ps(out + 16, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats - 16), index), out2);
+}
+
+/// Writes lanes [0, n) of a batch's three channels as n pixels, eight at a
+/// time (store_group_interleaved()). The loop GCC made of the same copy
+/// wrote the last group's pixels one by one, a loop whose varying trip count
+/// mispredicted at most span ends.
 PHONGRAST_FILL_INLINE void store_pixels_interleaved(glm::vec3* pixels, int n, const float (*channel)[kSampleBatch]) {
     static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "pixels are three packed floats");
-    float* out = &pixels[0].x;
-    for (int start = 0; start < n; start += 8, out += 24) {
-        const __m256 r = _mm256_loadu_ps(channel[0] + start);
-        const __m256 g = _mm256_loadu_ps(channel[1] + start);
-        const __m256 b = _mm256_loadu_ps(channel[2] + start);
-        // Per 128-bit half (lanes 0-3, then 4-7): r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3.
-        const __m256 rg_lo = _mm256_unpacklo_ps(r, g), rg_hi = _mm256_unpackhi_ps(r, g);
-        const __m256 br_lo = _mm256_unpacklo_ps(b, r), br_hi = _mm256_unpackhi_ps(b, r);
-        const __m256 gb_lo = _mm256_unpacklo_ps(g, b), gb_hi = _mm256_unpackhi_ps(g, b);
-        const __m256 x0 = _mm256_shuffle_ps(rg_lo, br_lo, _MM_SHUFFLE(3, 0, 1, 0));
-        const __m256 x1 = _mm256_shuffle_ps(gb_lo, rg_hi, _MM_SHUFFLE(1, 0, 3, 2));
-        const __m256 x2 = _mm256_shuffle_ps(br_hi, gb_hi, _MM_SHUFFLE(3, 2, 3, 0));
-        // The lower halves hold pixels 0-3, the upper 4-7: put them in order.
-        const __m256 out0 = _mm256_permute2f128_ps(x0, x1, 0x20);
-        const __m256 out1 = _mm256_permute2f128_ps(x2, x0, 0x30);
-        const __m256 out2 = _mm256_permute2f128_ps(x1, x2, 0x31);
-        const int floats = 3 * std::min(8, n - start);
-        if (floats == 24) {
-            _mm256_storeu_ps(out, out0);
-            _mm256_storeu_ps(out + 8, out1);
-            _mm256_storeu_ps(out + 16, out2);
-        } else {
-            const __m256i index = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-            _mm256_maskstore_ps(out, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats), index), out0);
-            _mm256_maskstore_ps(out + 8, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats - 8), index), out1);
-            _mm256_maskstore_ps(out + 16, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats - 16), index), out2);
-        }
+    for (int start = 0; start < n; start += 8) {
+        store_group_interleaved(&pixels[start].x, std::min(8, n - start), _mm256_loadu_ps(channel[0] + start),
+                                _mm256_loadu_ps(channel[1] + start), _mm256_loadu_ps(channel[2] + start));
     }
 }
 #endif
@@ -357,7 +360,7 @@ PHONGRAST_FILL_INLINE bool any_nonfinite_short(const __m128* colour, int count) 
 }
 
 /// Writes the four lanes' pixels where `lanes` (one 32-bit mask per lane) is set:
-/// r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3, as store_pixels_interleaved() forms each half.
+/// r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3, as store_group_interleaved() forms each half.
 PHONGRAST_FILL_INLINE void store_short_span(glm::vec3* pixels, const __m128* colour, __m128i lanes) {
     const __m128 r = colour[0], g = colour[1], b = colour[2];
     const __m128 x0 = _mm_shuffle_ps(_mm_unpacklo_ps(r, g), _mm_unpacklo_ps(b, r), _MM_SHUFFLE(3, 0, 1, 0));
@@ -440,8 +443,8 @@ PHONGRAST_FILL_INLINE bool fill_ranked_short_span_lit(const FillTriangle<float>&
 /// Gouraud's span of any length painted whole, in float: eight samples at a
 /// time in AVX vectors, the weights of sample k as shade_span_lanes() forms
 /// them (q + dq k, k converted from its integer), renormalised and
-/// interpolated lane by lane as fill_short_span_lit() does, then written by
-/// store_pixels_interleaved()'s shuffles and stores. Inline, so a span of a
+/// interpolated lane by lane as fill_short_span_lit() does, then written
+/// from the registers by store_group_interleaved(). Inline, so a span of a
 /// few groups costs no call and no lane arrays.
 template <bool Perspective>
 PHONGRAST_FILL_INLINE void fill_span_lit(const FillTriangle<float>& draw, const float* q, const float* dq, int count,
@@ -459,27 +462,28 @@ PHONGRAST_FILL_INLINE void fill_span_lit(const FillTriangle<float>& draw, const 
             const __m256 depth = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_add_ps(_mm256_add_ps(w[0], w[1]), w[2]));
             for (int i = 0; i < 3; ++i) w[i] = _mm256_mul_ps(w[i], depth);
         }
-        alignas(32) float channel[3][kSampleBatch];
         __m256 colour[3];
         for (int c = 0; c < 3; ++c) {
             colour[c] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(w[0], lit[0][c]), _mm256_mul_ps(w[1], lit[1][c])),
                                       _mm256_mul_ps(w[2], lit[2][c]));
         }
         const int n = std::min(8, count - start);
+        // finite_or_replaced()'s test, isfinite((r + g) + b), for the group's lanes.
         const __m256 magnitude =
             _mm256_andnot_ps(_mm256_set1_ps(-0.0f), _mm256_add_ps(_mm256_add_ps(colour[0], colour[1]), colour[2]));
         const int nonfinite = _mm256_movemask_ps(_mm256_cmp_ps(
                                   magnitude, _mm256_set1_ps(std::numeric_limits<float>::max()), _CMP_NLE_UQ)) &
                               ((1 << n) - 1);
-        for (int c = 0; c < 3; ++c) _mm256_store_ps(channel[c], colour[c]);
         if (nonfinite != 0) {
+            alignas(32) float channel[3][8];
+            for (int c = 0; c < 3; ++c) _mm256_store_ps(channel[c], colour[c]);
             for (int l = 0; l < n; ++l) {
                 pixels[start + l] =
                     finite_or_replaced(glm::vec3(channel[0][l], channel[1][l], channel[2][l]), replaced);
             }
             continue;
         }
-        store_pixels_interleaved(pixels + start, n, channel);
+        store_group_interleaved(&pixels[start].x, n, colour[0], colour[1], colour[2]);
     }
 }
 
