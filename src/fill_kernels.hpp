@@ -30,6 +30,7 @@
 #endif
 
 #include "fill_phong_lanes.hpp"
+#include "fill_span_writers.hpp"
 
 namespace phongrast::detail {
 inline namespace PHONGRAST_FILL_ISA {
@@ -159,33 +160,10 @@ PHONGRAST_FILL_INLINE void for_each_weighted_span(const FillTriangle<Real>& draw
     }
 }
 
-/// The last guard before a pixel is written: every input was validated
-/// finite, so this should never fire; if it does, the channel becomes 0 and
-/// is counted (RenderStats::nonfinite_values_replaced), never written as NaN.
-PHONGRAST_FILL_INLINE glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_t& replaced) {
-    if (std::isfinite(pixel.x + pixel.y + pixel.z)) return pixel;
-    for (int channel = 0; channel < 3; ++channel) {
-        if (!std::isfinite(pixel[channel])) {
-            pixel[channel] = 0.0f;
-            ++replaced;
-        }
-    }
-    return pixel;
-}
-
-/// Spans at least this long, painted whole (no owner buffer to skip samples
-/// by, no depth test), are shaded kSampleBatch samples at a time in vector
-/// loops (fill_span_lanes()); shorter spans, most spans of a mesh of small
-/// triangles, go sample by sample, which sets up less. Both write the same
-/// bits, so this is a choice of speed only: a padded batch of 8 lanes beat
-/// 4 to 7 samples one by one (armadillo, teapot, bunny Gouraud 0.87-0.92x
-/// against a threshold of 8), while spans of 2 and 3 gained nothing
-/// measurable.
-constexpr int kMinLanesSpan = 4;
-
-/// fill_samples()' shade_lanes for a kernel that shades every span sample by
-/// sample: flat, whose one colour costs a store per sample (the batches'
-/// weights would cost more than they save; measured on the teapot).
+/// fill_samples()' shade_lanes, or paint_span, for a kernel without them:
+/// flat has no batches (the batches' weights would cost more than they save
+/// on its one colour; measured on the teapot), and only the kernels of
+/// fill_span_writers.hpp's writers (AVX2, float) have span writers.
 struct NoLanes {};
 
 /// Lanes a batch's loops run over: the batch's samples rounded up to a whole
@@ -255,48 +233,6 @@ PHONGRAST_FILL_INLINE void shade_span_lanes(const Real* q, const Real* dq, int c
     }
 }
 
-#if PHONGRAST_FILL_VECTOR_BYTES == 32
-/// Writes eight lanes of three channels, the first n (1 to 8) of them, as n
-/// pixels of three floats from `out` on: turned into 24 interleaved floats by
-/// shuffles within 128-bit halves, then written as three 32-byte stores, a
-/// partial group's masked to its lanes (no pixel past them is touched).
-PHONGRAST_FILL_INLINE void store_group_interleaved(float* out, int n, __m256 r, __m256 g, __m256 b) {
-    // Per 128-bit half (lanes 0-3, then 4-7): r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3.
-    const __m256 rg_lo = _mm256_unpacklo_ps(r, g), rg_hi = _mm256_unpackhi_ps(r, g);
-    const __m256 br_lo = _mm256_unpacklo_ps(b, r), br_hi = _mm256_unpackhi_ps(b, r);
-    const __m256 gb_lo = _mm256_unpacklo_ps(g, b), gb_hi = _mm256_unpackhi_ps(g, b);
-    const __m256 x0 = _mm256_shuffle_ps(rg_lo, br_lo, _MM_SHUFFLE(3, 0, 1, 0));
-    const __m256 x1 = _mm256_shuffle_ps(gb_lo, rg_hi, _MM_SHUFFLE(1, 0, 3, 2));
-    const __m256 x2 = _mm256_shuffle_ps(br_hi, gb_hi, _MM_SHUFFLE(3, 2, 3, 0));
-    // The lower halves hold pixels 0-3, the upper 4-7: put them in order.
-    const __m256 out0 = _mm256_permute2f128_ps(x0, x1, 0x20);
-    const __m256 out1 = _mm256_permute2f128_ps(x2, x0, 0x30);
-    const __m256 out2 = _mm256_permute2f128_ps(x1, x2, 0x31);
-    if (n == 8) {
-        _mm256_storeu_ps(out, out0);
-        _mm256_storeu_ps(out + 8, out1);
-        _mm256_storeu_ps(out + 16, out2);
-        return;
-    }
-    const int floats = 3 * n;
-    const __m256i index = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    _mm256_maskstore_ps(out, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats), index), out0);
-    _mm256_maskstore_ps(out + 8, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats - 8), index), out1);
-    _mm256_maskstore_ps(out + 16, _mm256_cmpgt_epi32(_mm256_set1_epi32(floats - 16), index), out2);
-}
-
-/// Writes lanes [0, n) of a batch's three channels as n pixels, eight at a
-/// time (store_group_interleaved()). The loop GCC made of the same copy
-/// wrote the last group's pixels one by one, a loop whose varying trip count
-/// mispredicted at most span ends.
-PHONGRAST_FILL_INLINE void store_pixels_interleaved(glm::vec3* pixels, int n, const float (*channel)[kSampleBatch]) {
-    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "pixels are three packed floats");
-    for (int start = 0; start < n; start += 8) {
-        store_group_interleaved(&pixels[start].x, std::min(8, n - start), _mm256_loadu_ps(channel[0] + start),
-                                _mm256_loadu_ps(channel[1] + start), _mm256_loadu_ps(channel[2] + start));
-    }
-}
-#endif
 
 /// Shades a span in batches (shade_span_lanes()) and writes every sample,
 /// or, given `owners` (the span's owner row, nearest first), only those it
@@ -325,189 +261,6 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
     });
 }
 
-#if PHONGRAST_FILL_VECTOR_BYTES == 32
-/// Gouraud's colours of a span's first four samples, in float, one SSE
-/// vector per channel: lane by lane the operations of fill_samples()' loop
-/// with interpolate_lit() (q + dq k, renormalised when perspective-correct,
-/// (w0 a + w1 b) + w2 c), in the same order, so the same bits. For spans of 1
-/// to 3 samples (under kMinLanesSpan): computed once in lanes instead of
-/// sample by sample (a division and an interpolation per sample, and the
-/// scalar loop's latency); the lanes past the span are never written.
-template <bool Perspective>
-PHONGRAST_FILL_INLINE void short_span_lit_colours(const FillTriangle<float>& draw, const float* q, const float* dq,
-                                                  __m128* colour) {
-    static_assert(kMinLanesSpan <= 5, "a short span fits four lanes");
-    const __m128 k = _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f);
-    __m128 w[3];
-    for (int i = 0; i < 3; ++i) w[i] = _mm_add_ps(_mm_set1_ps(q[i]), _mm_mul_ps(_mm_set1_ps(dq[i]), k));
-    if constexpr (Perspective) {
-        const __m128 depth = _mm_div_ps(_mm_set1_ps(1.0f), _mm_add_ps(_mm_add_ps(w[0], w[1]), w[2]));
-        for (int i = 0; i < 3; ++i) w[i] = _mm_mul_ps(w[i], depth);
-    }
-    for (int c = 0; c < 3; ++c) {
-        colour[c] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(w[0], _mm_set1_ps(draw.lit[0][c])),
-                                          _mm_mul_ps(w[1], _mm_set1_ps(draw.lit[1][c]))),
-                               _mm_mul_ps(w[2], _mm_set1_ps(draw.lit[2][c])));
-    }
-}
-
-/// finite_or_replaced()'s test, isfinite((r + g) + b), failed in any of the first `count` lanes.
-PHONGRAST_FILL_INLINE bool any_nonfinite_short(const __m128* colour, int count) {
-    const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_add_ps(_mm_add_ps(colour[0], colour[1]), colour[2]));
-    const int nonfinite = _mm_movemask_ps(_mm_cmp_ps(magnitude, _mm_set1_ps(std::numeric_limits<float>::max()),
-                                                     _CMP_NLE_UQ));
-    return (nonfinite & ((1 << count) - 1)) != 0;
-}
-
-/// Writes the four lanes' pixels where `lanes` (one 32-bit mask per lane) is set:
-/// r0 g0 b0 r1 | g1 b1 r2 g2 | b2 r3 g3 b3, as store_group_interleaved() forms each half.
-PHONGRAST_FILL_INLINE void store_short_span(glm::vec3* pixels, const __m128* colour, __m128i lanes) {
-    const __m128 r = colour[0], g = colour[1], b = colour[2];
-    const __m128 x0 = _mm_shuffle_ps(_mm_unpacklo_ps(r, g), _mm_unpacklo_ps(b, r), _MM_SHUFFLE(3, 0, 1, 0));
-    const __m128 x1 = _mm_shuffle_ps(_mm_unpacklo_ps(g, b), _mm_unpackhi_ps(r, g), _MM_SHUFFLE(1, 0, 3, 2));
-    const __m128 x2 = _mm_shuffle_ps(_mm_unpackhi_ps(b, r), _mm_unpackhi_ps(g, b), _MM_SHUFFLE(3, 2, 3, 0));
-    float* first = &pixels[0].x;
-    // Float j of the twelve belongs to pixel j / 3.
-    _mm_maskstore_ps(first, _mm_shuffle_epi32(lanes, _MM_SHUFFLE(1, 0, 0, 0)), x0);
-    _mm_maskstore_ps(first + 4, _mm_shuffle_epi32(lanes, _MM_SHUFFLE(2, 2, 1, 1)), x1);
-    _mm_maskstore_ps(first + 8, _mm_shuffle_epi32(lanes, _MM_SHUFFLE(3, 3, 3, 2)), x2);
-}
-
-/// Lanes 0 to count - 1 set.
-PHONGRAST_FILL_INLINE __m128i first_lanes(int count) {
-    return _mm_cmpgt_epi32(_mm_set1_epi32(count), _mm_setr_epi32(0, 1, 2, 3));
-}
-
-/// Gouraud's span of 1 to 3 samples painted whole (short_span_lit_colours()).
-template <bool Perspective>
-PHONGRAST_FILL_INLINE void fill_short_span_lit(const FillTriangle<float>& draw, const float* q, const float* dq,
-                                               int count, glm::vec3* pixels, std::uint64_t& replaced) {
-    __m128 colour[3];
-    short_span_lit_colours<Perspective>(draw, q, dq, colour);
-    if (any_nonfinite_short(colour, count)) {
-        alignas(16) float channel[3][4];
-        for (int c = 0; c < 3; ++c) _mm_store_ps(channel[c], colour[c]);
-        for (int l = 0; l < count; ++l) {
-            pixels[l] = finite_or_replaced(glm::vec3(channel[0][l], channel[1][l], channel[2][l]), replaced);
-        }
-        return;
-    }
-    store_short_span(pixels, colour, first_lanes(count));
-}
-
-/// Gouraud's span of 1 to 3 samples in the fill in mesh order: its colours
-/// as fill_short_span_lit() computes them, each written where this draw
-/// ranks later than the colour there (write_if_ranked_later(), lane by lane:
-/// the keys compared unsigned, then, with `Ties`, the ties). False, with
-/// nothing written, if a colour is not finite: the caller then takes the
-/// sample-by-sample path, which counts the replaced channels.
-template <bool Ties, bool Perspective>
-PHONGRAST_FILL_INLINE bool fill_ranked_short_span_lit(const FillTriangle<float>& draw, FillTarget<float>& target,
-                                                      std::size_t start, int count, const float* q, const float* dq) {
-    __m128 colour[3];
-    short_span_lit_colours<Perspective>(draw, q, dq, colour);
-    if (any_nonfinite_short(colour, count)) return false;
-    const __m128i valid = first_lanes(count);
-    const __m256i valid_keys = _mm256_cvtepi32_epi64(valid);
-    long long* keys = reinterpret_cast<long long*>(target.rank_keys + start);
-    // Unsigned order as signed order: both sides with the top bit flipped.
-    const __m256i flip = _mm256_set1_epi64x(std::numeric_limits<long long>::min());
-    const __m256i held = _mm256_xor_si256(_mm256_maskload_epi64(keys, valid_keys), flip);
-    const __m256i mine = _mm256_xor_si256(_mm256_set1_epi64x(static_cast<long long>(target.key)), flip);
-    __m256i write;
-    if constexpr (Ties) {
-        int* ties = reinterpret_cast<int*>(target.rank_ties + start);
-        const __m128i flip_tie = _mm_set1_epi32(std::numeric_limits<int>::min());
-        const __m128i held_tie = _mm_xor_si128(_mm_maskload_epi32(ties, valid), flip_tie);
-        const __m128i later_tie =
-            _mm_cmpgt_epi32(_mm_xor_si128(_mm_set1_epi32(static_cast<int>(target.tie)), flip_tie), held_tie);
-        write = _mm256_or_si256(_mm256_cmpgt_epi64(mine, held),
-                                _mm256_and_si256(_mm256_cmpeq_epi64(mine, held), _mm256_cvtepi32_epi64(later_tie)));
-        write = _mm256_and_si256(write, valid_keys);
-    } else {
-        write = _mm256_andnot_si256(_mm256_cmpgt_epi64(held, mine), valid_keys);  // key >= held
-    }
-    // The 64-bit lane masks as 32-bit ones (each half of a lane is all ones or all zeros).
-    const __m128i lanes =
-        _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(write, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
-    _mm256_maskstore_epi64(keys, write, _mm256_set1_epi64x(static_cast<long long>(target.key)));
-    if constexpr (Ties) {
-        _mm_maskstore_epi32(reinterpret_cast<int*>(target.rank_ties + start), lanes,
-                            _mm_set1_epi32(static_cast<int>(target.tie)));
-    }
-    store_short_span(target.image.pixels.data() + start, colour, lanes);
-    target.samples += static_cast<std::uint64_t>(count);
-    return true;
-}
-
-/// Gouraud's span of any length painted whole, in float: eight samples at a
-/// time in AVX vectors, the weights of sample k as shade_span_lanes() forms
-/// them (q + dq k, k converted from its integer), renormalised and
-/// interpolated lane by lane as fill_short_span_lit() does, then written
-/// from the registers by store_group_interleaved(). Inline, so a span of a
-/// few groups costs no call and no lane arrays.
-template <bool Perspective>
-PHONGRAST_FILL_INLINE void fill_span_lit(const FillTriangle<float>& draw, const float* q, const float* dq, int count,
-                                         glm::vec3* pixels, std::uint64_t& replaced) {
-    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    __m256 lit[3][3];  // corner i, channel c
-    for (int i = 0; i < 3; ++i) {
-        for (int c = 0; c < 3; ++c) lit[i][c] = _mm256_set1_ps(draw.lit[i][c]);
-    }
-    for (int start = 0; start < count; start += 8) {
-        const __m256 k = _mm256_cvtepi32_ps(_mm256_add_epi32(_mm256_set1_epi32(start), lane));
-        __m256 w[3];
-        for (int i = 0; i < 3; ++i) w[i] = _mm256_add_ps(_mm256_set1_ps(q[i]), _mm256_mul_ps(_mm256_set1_ps(dq[i]), k));
-        if constexpr (Perspective) {
-            const __m256 depth = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_add_ps(_mm256_add_ps(w[0], w[1]), w[2]));
-            for (int i = 0; i < 3; ++i) w[i] = _mm256_mul_ps(w[i], depth);
-        }
-        __m256 colour[3];
-        for (int c = 0; c < 3; ++c) {
-            colour[c] = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(w[0], lit[0][c]), _mm256_mul_ps(w[1], lit[1][c])),
-                                      _mm256_mul_ps(w[2], lit[2][c]));
-        }
-        const int n = std::min(8, count - start);
-        // finite_or_replaced()'s test, isfinite((r + g) + b), for the group's lanes.
-        const __m256 magnitude =
-            _mm256_andnot_ps(_mm256_set1_ps(-0.0f), _mm256_add_ps(_mm256_add_ps(colour[0], colour[1]), colour[2]));
-        const int nonfinite = _mm256_movemask_ps(_mm256_cmp_ps(
-                                  magnitude, _mm256_set1_ps(std::numeric_limits<float>::max()), _CMP_NLE_UQ)) &
-                              ((1 << n) - 1);
-        if (nonfinite != 0) {
-            alignas(32) float channel[3][8];
-            for (int c = 0; c < 3; ++c) _mm256_store_ps(channel[c], colour[c]);
-            for (int l = 0; l < n; ++l) {
-                pixels[start + l] =
-                    finite_or_replaced(glm::vec3(channel[0][l], channel[1][l], channel[2][l]), replaced);
-            }
-            continue;
-        }
-        store_group_interleaved(&pixels[start].x, n, colour[0], colour[1], colour[2]);
-    }
-}
-
-/// fill_samples()' span writers for Gouraud in float (fill_lit()).
-template <bool Perspective>
-struct LitSpans {
-    const FillTriangle<float>& draw;
-
-    PHONGRAST_FILL_INLINE void whole(const float* q, const float* dq, int count, glm::vec3* pixels,
-                                     std::uint64_t& replaced) const {
-        if (count < kMinLanesSpan) {
-            fill_short_span_lit<Perspective>(draw, q, dq, count, pixels, replaced);
-        } else {
-            fill_span_lit<Perspective>(draw, q, dq, count, pixels, replaced);
-        }
-    }
-    template <bool Ties>
-    PHONGRAST_FILL_INLINE bool ranked_short(FillTarget<float>& target, std::size_t start, int count, const float* q,
-                                            const float* dq) const {
-        if (count >= kMinLanesSpan) return false;
-        return fill_ranked_short_span_lit<Ties, Perspective>(draw, target, start, count, q, dq);
-    }
-};
-#endif
 
 /// The rank test of the fill in mesh order: writes `colour` to sample k
 /// where painter's order draws this draw (rank `key`, then `tie`) after the
@@ -596,9 +349,10 @@ PHONGRAST_NOINLINE void fill_ranked_span(const Real* corner_depth, FillTarget<Re
 /// steps them by a constant per column. Long spans painted whole go through
 /// shade_lanes(n, w, out) instead (fill_span_lanes()), which must give lane
 /// for lane what shade(w) gives. A kernel with span writers of its own
-/// (`paint_span`, NoLanes if none: LitSpans) hands them every span painted
-/// whole, of any length (whole()), and in the fill in mesh order the spans
-/// under kMinLanesSpan (ranked_short(), which may decline), with the same duty.
+/// (`paint_span`, NoLanes if none: fill_span_writers.hpp) hands them every
+/// span painted whole, of any length (whole()), and in the fill in mesh order
+/// every span first (ranked(), which may decline: the paths below then take
+/// it), with the same duty.
 template <typename Real, bool Perspective, typename Shade, typename ShadeLanes, typename PaintSpan = NoLanes>
 PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarget<Real>& target, Shade&& shade,
                                         ShadeLanes&& shade_lanes, PaintSpan&& paint_span = PaintSpan{}) {
@@ -610,6 +364,13 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
         std::uint32_t* owners = owner_row(target, row);
         target.covered += static_cast<std::uint64_t>(count);
         if (target.rank_keys != nullptr) {
+            if constexpr (!std::is_same_v<std::decay_t<PaintSpan>, NoLanes>) {
+                const std::size_t start = row_start + static_cast<std::size_t>(first_column);
+                if (target.rank_ties != nullptr ? paint_span.template ranked<true>(target, start, count, q, dq)
+                                                : paint_span.template ranked<false>(target, start, count, q, dq)) {
+                    return;
+                }
+            }
             if constexpr (!std::is_same_v<std::decay_t<ShadeLanes>, NoLanes>) {
                 if (count >= kMinLanesSpan) {
                     const std::size_t start = row_start + static_cast<std::size_t>(first_column);
@@ -618,13 +379,6 @@ PHONGRAST_FILL_INLINE void fill_samples(const FillTriangle<Real>& draw, FillTarg
                     } else {
                         fill_ranked_span_lanes<false, Real, Perspective>(target, start, count, q, dq, shade_lanes);
                     }
-                    return;
-                }
-            }
-            if constexpr (!std::is_same_v<std::decay_t<PaintSpan>, NoLanes>) {
-                const std::size_t start = row_start + static_cast<std::size_t>(first_column);
-                if (target.rank_ties != nullptr ? paint_span.template ranked_short<true>(target, start, count, q, dq)
-                                                : paint_span.template ranked_short<false>(target, start, count, q, dq)) {
                     return;
                 }
             }
@@ -706,7 +460,8 @@ void fill_lit(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVec
     };
 #if PHONGRAST_FILL_VECTOR_BYTES == 32
     if constexpr (std::is_same_v<Real, float>) {
-        fill_samples<Real, Perspective>(draw, target, shade, shade_lanes, LitSpans<Perspective>{draw});
+        const InterpolatedSpans<Perspective, false> spans{{{&draw.lit[0], &draw.lit[1], &draw.lit[2]}}};
+        fill_samples<Real, Perspective>(draw, target, shade, shade_lanes, spans);
         return;
     }
 #endif
@@ -719,6 +474,13 @@ void fill_lit(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVec
 template <typename Real, bool Perspective>
 void fill_flat(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
                const FillConstants<Real>&) {
+#if PHONGRAST_FILL_VECTOR_BYTES == 32
+    if constexpr (std::is_same_v<Real, float>) {
+        fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; }, NoLanes{},
+                                        FlatSpans{draw.lit[0]});
+        return;
+    }
+#endif
     fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; }, NoLanes{});
 }
 
@@ -863,11 +625,11 @@ void fill_lit_textured(const FillTriangle<Real>& draw, FillTarget<Real>& target,
 /// per lane T[c] * A[c] + S[c], as one sample at a time. A face without a
 /// texture writes its one colour as fill_flat() does (set-up put it in lit[0]).
 template <typename Real, bool Perspective>
-void fill_flat_textured(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
+void fill_flat_textured(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>& vectors,
                         const FillConstants<Real>& constants) {
     const KernelTexture& texture = constants.textures[draw.surface];
     if (texture.texels == nullptr) {
-        fill_samples<Real, Perspective>(draw, target, [&](const Real*) { return draw.lit[0]; }, NoLanes{});
+        fill_flat<Real, Perspective>(draw, target, vectors, constants);
         return;
     }
     fill_sample_batches<Real, Perspective>(draw, target, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
@@ -977,15 +739,17 @@ void fill_phong_seed(const FillTriangle<Real>& draw, FillTarget<Real>& target, L
 /// Phong with neither diffuse nor specular needs no normal and no light: per
 /// sample it is the ambient term of the interpolated colour, which costs what
 /// Gouraud's interpolation costs. It goes through fill_samples (long spans
-/// in vector loops, short ones sample by sample), skipping the batches'
-/// gathering, with shade_phong_batch's
+/// in vector loops, short ones sample by sample; the AVX2 kernels in float
+/// paint every span with the span writers of fill_span_writers.hpp, as
+/// Gouraud does), skipping the batches' gathering, with shade_phong_batch's
 /// operations in the same order (0 + factor * colour, colour interpolated as
 /// (w0 a + w1 b) + w2 c), so the image is the general kernel's bit for bit.
+/// With one colour, or no ambient term, every sample is the same colour.
 template <typename Real, bool Perspective, bool Ambient, bool UniformColor>
 void fill_phong_unlit(const FillTriangle<Real>& draw, FillTarget<Real>& target, LightVectorsAt<Real>&,
                       const FillConstants<Real>& constants) {
     const Vec3<Real> factor = constants.rig_of(draw).ambient_factor;
-    fill_samples<Real, Perspective>(draw, target, [&](const Real* w) {
+    const auto shade = [&](const Real* w) {
         Vec3<Real> out(Real(0));
         if constexpr (Ambient) {
             for (int c = 0; c < 3; ++c) {
@@ -996,7 +760,8 @@ void fill_phong_unlit(const FillTriangle<Real>& draw, FillTarget<Real>& target, 
             }
         }
         return out;
-    }, [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
+    };
+    const auto shade_lanes = [&](int n, const Lanes<Real>* w, Lanes<Real>* out) {
         for (int c = 0; c < 3; ++c) {
             if constexpr (Ambient) {
                 if constexpr (UniformColor) {
@@ -1010,7 +775,21 @@ void fill_phong_unlit(const FillTriangle<Real>& draw, FillTarget<Real>& target, 
                 for (int l = 0; l < n; ++l) out[c][l] = Real(0);
             }
         }
-    });
+    };
+#if PHONGRAST_FILL_VECTOR_BYTES == 32
+    if constexpr (std::is_same_v<Real, float>) {
+        if constexpr (UniformColor || !Ambient) {
+            const Real none[3] = {};
+            fill_samples<Real, Perspective>(draw, target, shade, shade_lanes, FlatSpans{shade(none)});
+        } else {
+            const InterpolatedSpans<Perspective, true> spans{
+                {{&draw.v[0]->color, &draw.v[1]->color, &draw.v[2]->color}, factor}};
+            fill_samples<Real, Perspective>(draw, target, shade, shade_lanes, spans);
+        }
+        return;
+    }
+#endif
+    fill_samples<Real, Perspective>(draw, target, shade, shade_lanes);
 }
 
 /// fill_samples() for a TinyDraw (a whole triangle whose box of at most 2 x 2
@@ -1018,9 +797,12 @@ void fill_phong_unlit(const FillTriangle<Real>& draw, FillTarget<Real>& target, 
 /// the screen's covered centres in the target's rows, with SpanWeights'
 /// weights from the same exact edge values, then each sample as
 /// fill_samples() shades and writes it, by the rank test or written as it
-/// is. Only the fill in mesh order fills tiny draws: no owner buffer, no depth buffer.
-template <typename Real, bool Perspective, typename Shade>
-PHONGRAST_FILL_INLINE void fill_tiny_samples(const TinyDraw<Real>& draw, FillTarget<Real>& target, Shade&& shade) {
+/// is. Only the fill in mesh order fills tiny draws: no owner buffer, no
+/// depth buffer. Span writers (`paint_span`, as fill_samples() takes them)
+/// paint each row's span first.
+template <typename Real, bool Perspective, typename Shade, typename PaintSpan = NoLanes>
+PHONGRAST_FILL_INLINE void fill_tiny_samples(const TinyDraw<Real>& draw, FillTarget<Real>& target, Shade&& shade,
+                                             PaintSpan&& paint_span = PaintSpan{}) {
     assert(target.owner == nullptr && !target.depth_test);
     const TinyCoverage& c = draw.coverage;
     Real inverse_area = Real(0), inverse_depth[3] = {Real(1), Real(1), Real(1)}, dq[3] = {};
@@ -1053,7 +835,20 @@ PHONGRAST_FILL_INLINE void fill_tiny_samples(const TinyDraw<Real>& draw, FillTar
         const std::size_t row_start = static_cast<std::size_t>(row) * columns;
         target.covered += static_cast<std::uint64_t>(count);
         if (target.rank_keys != nullptr) {
+            if constexpr (!std::is_same_v<std::decay_t<PaintSpan>, NoLanes>) {
+                const std::size_t start = row_start + static_cast<std::size_t>(first_column);
+                if (target.rank_ties != nullptr ? paint_span.template ranked<true>(target, start, count, q, dq)
+                                                : paint_span.template ranked<false>(target, start, count, q, dq)) {
+                    continue;
+                }
+            }
             fill_ranked_span<Real, Perspective>(draw.depth, target, row_start, first_column, count, q, dq, shade);
+            continue;
+        }
+        if constexpr (!std::is_same_v<std::decay_t<PaintSpan>, NoLanes>) {
+            paint_span.whole(q, dq, count, &target.image.pixels[row_start + static_cast<std::size_t>(first_column)],
+                             target.replaced);
+            target.samples += static_cast<std::uint64_t>(count);
             continue;
         }
         for (int k = 0; k < count; ++k) {
@@ -1069,15 +864,30 @@ PHONGRAST_FILL_INLINE void fill_tiny_samples(const TinyDraw<Real>& draw, FillTar
 /// fill_flat() for a TinyDraw: corner[0] is the triangle's colour.
 template <typename Real, bool Perspective>
 void fill_tiny_flat(const TinyDraw<Real>& draw, FillTarget<Real>& target, const FillConstants<Real>&) {
-    fill_tiny_samples<Real, Perspective>(draw, target, [&](const Real*) { return *draw.corner[0]; });
+    const auto shade = [&](const Real*) { return *draw.corner[0]; };
+#if PHONGRAST_FILL_VECTOR_BYTES == 32
+    if constexpr (std::is_same_v<Real, float>) {
+        fill_tiny_samples<Real, Perspective>(draw, target, shade, FlatSpans{*draw.corner[0]});
+        return;
+    }
+#endif
+    fill_tiny_samples<Real, Perspective>(draw, target, shade);
 }
 
 /// fill_lit() for a TinyDraw: corner[i] is the lit colour.
 template <typename Real, bool Perspective>
 void fill_tiny_lit(const TinyDraw<Real>& draw, FillTarget<Real>& target, const FillConstants<Real>&) {
-    fill_tiny_samples<Real, Perspective>(draw, target, [&](const Real* w) {
+    const auto shade = [&](const Real* w) {
         return w[0] * *draw.corner[0] + w[1] * *draw.corner[1] + w[2] * *draw.corner[2];
-    });
+    };
+#if PHONGRAST_FILL_VECTOR_BYTES == 32
+    if constexpr (std::is_same_v<Real, float>) {
+        const InterpolatedSpans<Perspective, false> spans{{{draw.corner[0], draw.corner[1], draw.corner[2]}}};
+        fill_tiny_samples<Real, Perspective>(draw, target, shade, spans);
+        return;
+    }
+#endif
+    fill_tiny_samples<Real, Perspective>(draw, target, shade);
 }
 
 /// fill_phong_unlit() with the ambient term and varying colours for a
@@ -1085,7 +895,7 @@ void fill_tiny_lit(const TinyDraw<Real>& draw, FillTarget<Real>& target, const F
 template <typename Real, bool Perspective>
 void fill_tiny_ambient(const TinyDraw<Real>& draw, FillTarget<Real>& target, const FillConstants<Real>& constants) {
     const Vec3<Real> factor = constants.rig[draw.surface].ambient_factor;
-    fill_tiny_samples<Real, Perspective>(draw, target, [&](const Real* w) {
+    const auto shade = [&](const Real* w) {
         Vec3<Real> out(Real(0));
         for (int c = 0; c < 3; ++c) {
             const Real color =
@@ -1093,7 +903,15 @@ void fill_tiny_ambient(const TinyDraw<Real>& draw, FillTarget<Real>& target, con
             out[c] += factor[c] * color;
         }
         return out;
-    });
+    };
+#if PHONGRAST_FILL_VECTOR_BYTES == 32
+    if constexpr (std::is_same_v<Real, float>) {
+        const InterpolatedSpans<Perspective, true> spans{{{draw.corner[0], draw.corner[1], draw.corner[2]}, factor}};
+        fill_tiny_samples<Real, Perspective>(draw, target, shade, spans);
+        return;
+    }
+#endif
+    fill_tiny_samples<Real, Perspective>(draw, target, shade);
 }
 
 /// Phong as a straightforward implementation writes it: every term checked per batch, every light.

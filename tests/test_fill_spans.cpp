@@ -1,9 +1,11 @@
 // Spans of a triangle painted whole are shaded in vector batches
-// (fill_kernels.hpp: fill_span_lanes()) or, for Gouraud in the AVX2 float
-// kernels, by its own span code (LitSpans: short spans in four lanes, long
-// ones eight at a time); spans the depth buffer tests are shaded sample by
-// sample. On triangles that do not overlap the two must paint the same bits:
-// this compares them where the spans are long and where they are 1-3 samples.
+// (fill_kernels.hpp: fill_span_lanes()) or, in the AVX2 float kernels, by
+// span writers of their own (fill_span_writers.hpp: Gouraud's and Phong's
+// ambient-only interpolation, short spans in four lanes and long ones eight
+// at a time; flat's and a uniform ambient's one colour in groups of eight);
+// spans the depth buffer tests are shaded sample by sample. On triangles that
+// do not overlap the two must paint the same bits: this compares them where
+// the spans are long and where they are 1-3 samples.
 #include <cstdint>
 #include <string>
 
@@ -127,19 +129,36 @@ Scene fine_grid_scene() {
 }  // namespace
 
 TEST_CASE("short spans shaded in four lanes paint what sample-by-sample shading paints") {
-    for (bool orthographic : {false, true}) {  // perspective-correct weights, then screen-linear ones
-        Scene scene = fine_grid_scene();
-        if (orthographic) {
-            const Camera pinhole = scene.camera;
-            scene.camera = Camera::orthographic(pinhole.eye, pinhole.lookat, pinhole.up, 2.4, 2.4);
-        }
-        for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
-            for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
-                if (!detail::kernel_isa_available(isa)) continue;
-                INFO(mode.name << (isa == detail::KernelIsa::avx2 ? ", AVX2" : ", baseline")
-                               << (orthographic ? ", orthographic" : ""));
-                // 4,608 triangles over ~10,000 samples: about two samples each.
-                check_same(render_both_ways(scene, mode.options, isa));
+    struct Case {
+        Shader shader;
+        Lighting lighting;
+        bool uniform_color;
+        std::string name;
+    };
+    const Case cases[] = {
+        {Shader::gouraud, Lighting::full(), false, "Gouraud"},
+        {Shader::phong, Lighting::only_ambient(), false, "Phong ambient-only"},
+        {Shader::phong, Lighting::only_ambient(), true, "Phong ambient-only, one colour"},
+        {Shader::flat, Lighting::full(), false, "flat"},
+    };
+    for (const Case& c : cases) {
+        for (bool orthographic : {false, true}) {  // perspective-correct weights, then screen-linear ones
+            Scene scene = fine_grid_scene();
+            scene.shader = c.shader;
+            scene.lighting = c.lighting;
+            if (c.uniform_color) scene.mesh.colors.clear();
+            if (orthographic) {
+                const Camera pinhole = scene.camera;
+                scene.camera = Camera::orthographic(pinhole.eye, pinhole.lookat, pinhole.up, 2.4, 2.4);
+            }
+            for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+                for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
+                    if (!detail::kernel_isa_available(isa)) continue;
+                    INFO(c.name << ", " << mode.name << (isa == detail::KernelIsa::avx2 ? ", AVX2" : ", baseline")
+                                << (orthographic ? ", orthographic" : ""));
+                    // 4,608 triangles over ~10,000 samples: about two samples each.
+                    check_same(render_both_ways(scene, mode.options, isa));
+                }
             }
         }
     }
