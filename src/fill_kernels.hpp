@@ -261,27 +261,6 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
     });
 }
 
-
-/// The rank test of the fill in mesh order: writes `colour` to sample k
-/// where painter's order draws this draw (rank `key`, then `tie`) after the
-/// one whose colour is there. `Ties`: the draws' ties must be compared (a
-/// reordered mesh); else the draws come in the order of their ties, so a
-/// draw of equal key always comes after the one whose colour is there.
-template <bool Ties>
-PHONGRAST_FILL_INLINE void write_if_ranked_later(std::uint64_t* keys, std::uint32_t* ties, glm::vec3* pixels, int k,
-                                                 std::uint64_t key, std::uint32_t tie, glm::vec3 colour) {
-    if constexpr (Ties) {
-        if (key > keys[k] || (key == keys[k] && tie > ties[k])) {
-            keys[k] = key;
-            ties[k] = tie;
-            pixels[k] = colour;
-        }
-    } else if (key >= keys[k]) {
-        keys[k] = key;
-        pixels[k] = colour;
-    }
-}
-
 /// fill_ranked_span()'s loop (`Ties`: write_if_ranked_later()).
 template <bool Ties, typename Real, bool Perspective, typename Shade>
 PHONGRAST_FILL_INLINE void fill_ranked_samples(const Real* corner_depth, FillTarget<Real>& target,

@@ -46,6 +46,26 @@ PHONGRAST_FILL_INLINE glm::vec3 finite_or_replaced(glm::vec3 pixel, std::uint64_
 /// measurable.
 constexpr int kMinLanesSpan = 4;
 
+/// The rank test of the fill in mesh order: writes `colour` to sample k
+/// where painter's order draws this draw (rank `key`, then `tie`) after the
+/// one whose colour is there. `Ties`: the draws' ties must be compared (a
+/// reordered mesh); else the draws come in the order of their ties, so a
+/// draw of equal key always comes after the one whose colour is there.
+template <bool Ties>
+PHONGRAST_FILL_INLINE void write_if_ranked_later(std::uint64_t* keys, std::uint32_t* ties, glm::vec3* pixels, int k,
+                                                 std::uint64_t key, std::uint32_t tie, glm::vec3 colour) {
+    if constexpr (Ties) {
+        if (key > keys[k] || (key == keys[k] && tie > ties[k])) {
+            keys[k] = key;
+            ties[k] = tie;
+            pixels[k] = colour;
+        }
+    } else if (key >= keys[k]) {
+        keys[k] = key;
+        pixels[k] = colour;
+    }
+}
+
 #if PHONGRAST_FILL_VECTOR_BYTES == 32
 /// Writes eight lanes of three channels, the first n (1 to 8) of them, as n
 /// pixels of three floats from `out` on: turned into 24 interleaved floats by
@@ -190,46 +210,24 @@ PHONGRAST_FILL_INLINE void fill_short_span(const CornerColours<Scaled>& corners,
     store_short_span(pixels, colour, first_lanes(count));
 }
 
-/// Writes samples start to start + count - 1 (count 1 to 4) of the fill in
-/// mesh order, lane l the pixel colour[.][l], where this draw ranks later
-/// than the colour there: write_if_ranked_later() lane by lane, the keys
-/// compared unsigned, then, with `Ties`, the ties. The colours are finite.
-template <bool Ties>
-PHONGRAST_FILL_INLINE void write_ranked_four(FillTarget<float>& target, std::size_t start, int count,
-                                             const __m128* colour) {
-    const __m128i valid = first_lanes(count);
-    const __m256i valid_keys = _mm256_cvtepi32_epi64(valid);
-    long long* keys = reinterpret_cast<long long*>(target.rank_keys + start);
-    // Unsigned order as signed order: both sides with the top bit flipped.
-    const __m256i flip = _mm256_set1_epi64x(std::numeric_limits<long long>::min());
-    const __m256i held = _mm256_xor_si256(_mm256_maskload_epi64(keys, valid_keys), flip);
-    const __m256i mine = _mm256_xor_si256(_mm256_set1_epi64x(static_cast<long long>(target.key)), flip);
-    __m256i write;
-    if constexpr (Ties) {
-        int* ties = reinterpret_cast<int*>(target.rank_ties + start);
-        const __m128i flip_tie = _mm_set1_epi32(std::numeric_limits<int>::min());
-        const __m128i held_tie = _mm_xor_si128(_mm_maskload_epi32(ties, valid), flip_tie);
-        const __m128i later_tie =
-            _mm_cmpgt_epi32(_mm_xor_si128(_mm_set1_epi32(static_cast<int>(target.tie)), flip_tie), held_tie);
-        write = _mm256_or_si256(_mm256_cmpgt_epi64(mine, held),
-                                _mm256_and_si256(_mm256_cmpeq_epi64(mine, held), _mm256_cvtepi32_epi64(later_tie)));
-        write = _mm256_and_si256(write, valid_keys);
-    } else {
-        write = _mm256_andnot_si256(_mm256_cmpgt_epi64(held, mine), valid_keys);  // key >= held
+/// Writes samples start to start + count - 1 of the fill in mesh order,
+/// sample k the colour pixel(k), by write_if_ranked_later(). The test stays
+/// scalar: the same test in four lanes, with masked loads and stores of the
+/// keys, ties and pixels, was slower (in-process A/B, 1 thread: the 1.3M
+/// sphere's Gouraud and Phong ambient-only 0.94 with the scalar test, the 125k
+/// 0.98), likely as masked stores cannot forward to the next span's loads.
+template <bool Ties, typename Pixel>
+PHONGRAST_FILL_INLINE void write_ranked(FillTarget<float>& target, std::size_t start, int count, Pixel&& pixel) {
+    std::uint64_t* keys = target.rank_keys + start;
+    std::uint32_t* ties = Ties ? target.rank_ties + start : nullptr;
+    glm::vec3* pixels = target.image.pixels.data() + start;
+    for (int k = 0; k < count; ++k) {
+        write_if_ranked_later<Ties>(keys, ties, pixels, k, target.key, target.tie, pixel(k));
     }
-    // The 64-bit lane masks as 32-bit ones (each half of a lane is all ones or all zeros).
-    const __m128i lanes =
-        _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(write, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
-    _mm256_maskstore_epi64(keys, write, _mm256_set1_epi64x(static_cast<long long>(target.key)));
-    if constexpr (Ties) {
-        _mm_maskstore_epi32(reinterpret_cast<int*>(target.rank_ties + start), lanes,
-                            _mm_set1_epi32(static_cast<int>(target.tie)));
-    }
-    store_short_span(target.image.pixels.data() + start, colour, lanes);
 }
 
 /// A span of 1 to 3 samples in the fill in mesh order: its colours as
-/// fill_short_span() computes them, written by write_ranked_four(). False,
+/// fill_short_span() computes them, written by write_ranked(). False,
 /// with nothing written, if a colour is not finite: the caller then takes the
 /// sample-by-sample path, which counts the replaced channels.
 template <bool Ties, bool Perspective, bool Scaled>
@@ -238,7 +236,11 @@ PHONGRAST_FILL_INLINE bool fill_ranked_short_span(const CornerColours<Scaled>& c
     __m128 colour[3];
     short_span_colours<Perspective>(corners, q, dq, colour);
     if (any_nonfinite_short(colour, count)) return false;
-    write_ranked_four<Ties>(target, start, count, colour);
+    alignas(16) float channel[3][4];
+    for (int c = 0; c < 3; ++c) _mm_store_ps(channel[c], colour[c]);
+    write_ranked<Ties>(target, start, count, [&](int k) PHONGRAST_INLINE_LAMBDA {
+        return glm::vec3(channel[0][k], channel[1][k], channel[2][k]);
+    });
     target.samples += static_cast<std::uint64_t>(count);
     return true;
 }
@@ -311,8 +313,8 @@ struct InterpolatedSpans {
 
 /// fill_samples()' span writers for flat (fill_flat(), fill_tiny_flat()):
 /// the triangle's one colour, as it is, in every sample of a span of any
-/// length, eight pixels per group of stores, four per rank test in the fill
-/// in mesh order. A colour that is not finite goes sample by sample
+/// length, eight pixels per group of stores, and in the fill in mesh order
+/// with no weights computed. A colour that is not finite goes sample by sample
 /// (whole()) or is declined (ranked()), so the replacements are counted as
 /// finite_or_replaced() counts them.
 struct FlatSpans {
@@ -334,11 +336,7 @@ struct FlatSpans {
     PHONGRAST_FILL_INLINE bool ranked(FillTarget<float>& target, std::size_t start, int count, const float*,
                                       const float*) const {
         if (!finite()) return false;
-        const __m128 channel[3] = {_mm_set1_ps(colour.x), _mm_set1_ps(colour.y), _mm_set1_ps(colour.z)};
-        for (int first = 0; first < count; first += 4) {
-            write_ranked_four<Ties>(target, start + static_cast<std::size_t>(first), std::min(4, count - first),
-                                    channel);
-        }
+        write_ranked<Ties>(target, start, count, [&](int) PHONGRAST_INLINE_LAMBDA { return colour; });
         target.samples += static_cast<std::uint64_t>(count);
         return true;
     }
