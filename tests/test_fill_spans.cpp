@@ -63,30 +63,37 @@ void check_same(const TwoFills& fills) {
     CHECK(same_bits(fills.batched.image, fills.one_by_one.image));
 }
 
+/// The kernels whose spans are painted whole by batches or span writers.
+struct ShadingCase {
+    Shader shader;
+    Lighting lighting;
+    bool uniform_color;
+    std::string name;
+};
+const ShadingCase kShadingCases[] = {
+    {Shader::gouraud, Lighting::full(), false, "Gouraud"},
+    {Shader::gouraud, Lighting::full(), true, "Gouraud, one colour"},
+    {Shader::phong, Lighting::only_ambient(), false, "Phong ambient-only"},
+    {Shader::phong, Lighting::only_ambient(), true, "Phong ambient-only, one colour"},
+    {Shader::flat, Lighting::full(), false, "flat"},
+};
+
+/// `scene` shaded as `c` says.
+Scene shaded_as(Scene scene, const ShadingCase& c) {
+    scene.shader = c.shader;
+    scene.lighting = c.lighting;
+    if (c.uniform_color) scene.mesh.colors.clear();
+    return scene;
+}
+
 }  // namespace
 
 TEST_CASE("long spans shaded in batches paint what sample-by-sample shading paints") {
-    struct Case {
-        Shader shader;
-        Lighting lighting;
-        bool uniform_color;
-        std::string name;
-    };
-    const Case cases[] = {
-        {Shader::gouraud, Lighting::full(), false, "Gouraud"},
-        {Shader::gouraud, Lighting::full(), true, "Gouraud, one colour"},
-        {Shader::phong, Lighting::only_ambient(), false, "Phong ambient-only"},
-        {Shader::phong, Lighting::only_ambient(), true, "Phong ambient-only, one colour"},
-        {Shader::flat, Lighting::full(), false, "flat"},
-    };
-    for (const Case& c : cases) {
+    for (const ShadingCase& c : kShadingCases) {
         for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
             for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
                 if (!detail::kernel_isa_available(isa)) continue;
-                Scene scene = fan_scene();
-                scene.shader = c.shader;
-                scene.lighting = c.lighting;
-                if (c.uniform_color) scene.mesh.colors.clear();
+                const Scene scene = shaded_as(fan_scene(), c);
                 INFO(c.name << ", " << mode.name << (isa == detail::KernelIsa::avx2 ? ", AVX2" : ", baseline"));
                 // Spans of 30 and more samples: most of the picture goes through the batches.
                 check_same(render_both_ways(scene, mode.options, isa));
@@ -129,24 +136,9 @@ Scene fine_grid_scene() {
 }  // namespace
 
 TEST_CASE("short spans shaded in four lanes paint what sample-by-sample shading paints") {
-    struct Case {
-        Shader shader;
-        Lighting lighting;
-        bool uniform_color;
-        std::string name;
-    };
-    const Case cases[] = {
-        {Shader::gouraud, Lighting::full(), false, "Gouraud"},
-        {Shader::phong, Lighting::only_ambient(), false, "Phong ambient-only"},
-        {Shader::phong, Lighting::only_ambient(), true, "Phong ambient-only, one colour"},
-        {Shader::flat, Lighting::full(), false, "flat"},
-    };
-    for (const Case& c : cases) {
+    for (const ShadingCase& c : kShadingCases) {
         for (bool orthographic : {false, true}) {  // perspective-correct weights, then screen-linear ones
-            Scene scene = fine_grid_scene();
-            scene.shader = c.shader;
-            scene.lighting = c.lighting;
-            if (c.uniform_color) scene.mesh.colors.clear();
+            Scene scene = shaded_as(fine_grid_scene(), c);
             if (orthographic) {
                 const Camera pinhole = scene.camera;
                 scene.camera = Camera::orthographic(pinhole.eye, pinhole.lookat, pinhole.up, 2.4, 2.4);
