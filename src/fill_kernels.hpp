@@ -261,43 +261,31 @@ PHONGRAST_NOINLINE void fill_span_lanes(const Real* q, const Real* dq, int count
     });
 }
 
-/// fill_ranked_span()'s loop (`Ties`: write_if_ranked_later()).
+/// fill_ranked_span()'s loop (`Ties`: write_ranked()).
 template <bool Ties, typename Real, bool Perspective, typename Shade>
 PHONGRAST_FILL_INLINE void fill_ranked_samples(const Real* corner_depth, FillTarget<Real>& target,
                                                std::size_t start, int count, const Real* q, const Real* dq,
                                                Shade& shade) {
-    std::uint64_t* keys = target.rank_keys + start;
-    std::uint32_t* ties = Ties ? target.rank_ties + start : nullptr;
-    glm::vec3* pixels = target.image.pixels.data() + start;
-    const std::uint64_t key = target.key;
-    const std::uint32_t tie = target.tie;
-    for (int k = 0; k < count; ++k) {
+    write_ranked<Ties>(target, start, count, [&](int k) PHONGRAST_INLINE_LAMBDA {
         Real w[3];
         sample_weights<Real, Perspective>(corner_depth, q, dq, k, w);
-        const glm::vec3 colour = finite_or_replaced(glm::vec3(shade(w)), target.replaced);
-        write_if_ranked_later<Ties>(keys, ties, pixels, k, key, tie, colour);
-    }
+        return finite_or_replaced(glm::vec3(shade(w)), target.replaced);
+    });
 }
 
 /// fill_ranked_span()'s long spans: shaded in batches as fill_span_lanes()
 /// shades them (the same bits as sample by sample), each sample then written
-/// by the rank test of fill_ranked_samples().
+/// by write_ranked().
 template <bool Ties, typename Real, bool Perspective, typename ShadeLanes>
 PHONGRAST_NOINLINE void fill_ranked_span_lanes(FillTarget<Real>& target, std::size_t start, int count,
                                                const Real* q, const Real* dq, ShadeLanes& shade_lanes) {
-    std::uint64_t* keys = target.rank_keys + start;
-    std::uint32_t* ties = Ties ? target.rank_ties + start : nullptr;
-    glm::vec3* pixels = target.image.pixels.data() + start;
-    const std::uint64_t key = target.key;
-    const std::uint32_t tie = target.tie;
     shade_span_lanes<Real, Perspective>(
         q, dq, count, shade_lanes,
         [&](int batch, int n, const float (*channel)[kSampleBatch], bool nonfinite) PHONGRAST_INLINE_LAMBDA {
-        for (int l = 0; l < n; ++l) {
-            glm::vec3 colour(channel[0][l], channel[1][l], channel[2][l]);
-            if (nonfinite) colour = finite_or_replaced(colour, target.replaced);
-            write_if_ranked_later<Ties>(keys, ties, pixels, batch + l, key, tie, colour);
-        }
+        write_ranked<Ties>(target, start + static_cast<std::size_t>(batch), n, [&](int l) PHONGRAST_INLINE_LAMBDA {
+            const glm::vec3 colour(channel[0][l], channel[1][l], channel[2][l]);
+            return nonfinite ? finite_or_replaced(colour, target.replaced) : colour;
+        });
     });
     target.samples += static_cast<std::uint64_t>(count);
 }

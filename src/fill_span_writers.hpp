@@ -66,6 +66,24 @@ PHONGRAST_FILL_INLINE void write_if_ranked_later(std::uint64_t* keys, std::uint3
     }
 }
 
+/// Writes samples start + k, k < count, of the fill in mesh order, sample k
+/// the colour pixel(k) (evaluated before its test, as painter's fill shades
+/// every sample), by write_if_ranked_later(). The test stays scalar: the same
+/// test in four lanes, with masked loads and stores of the keys, ties and
+/// pixels, was slower (in-process A/B, 1 thread: the 1.3M sphere's Gouraud
+/// and Phong ambient-only 0.94 with the scalar test, the 125k 0.98), likely
+/// as masked stores cannot forward to the next span's loads.
+template <bool Ties, typename Real, typename Pixel>
+PHONGRAST_FILL_INLINE void write_ranked(FillTarget<Real>& target, std::size_t start, int count, Pixel&& pixel) {
+    std::uint64_t* keys = target.rank_keys + start;
+    std::uint32_t* ties = Ties ? target.rank_ties + start : nullptr;
+    glm::vec3* pixels = target.image.pixels.data() + start;
+    // Locals: the stores to keys could otherwise be taken to change them.
+    const std::uint64_t key = target.key;
+    const std::uint32_t tie = target.tie;
+    for (int k = 0; k < count; ++k) write_if_ranked_later<Ties>(keys, ties, pixels, k, key, tie, pixel(k));
+}
+
 #if PHONGRAST_FILL_VECTOR_BYTES == 32
 /// Writes eight lanes of three channels, the first n (1 to 8) of them, as n
 /// pixels of three floats from `out` on: turned into 24 interleaved floats by
@@ -210,22 +228,6 @@ PHONGRAST_FILL_INLINE void fill_short_span(const CornerColours<Scaled>& corners,
     store_short_span(pixels, colour, first_lanes(count));
 }
 
-/// Writes samples start to start + count - 1 of the fill in mesh order,
-/// sample k the colour pixel(k), by write_if_ranked_later(). The test stays
-/// scalar: the same test in four lanes, with masked loads and stores of the
-/// keys, ties and pixels, was slower (in-process A/B, 1 thread: the 1.3M
-/// sphere's Gouraud and Phong ambient-only 0.94 with the scalar test, the 125k
-/// 0.98), likely as masked stores cannot forward to the next span's loads.
-template <bool Ties, typename Pixel>
-PHONGRAST_FILL_INLINE void write_ranked(FillTarget<float>& target, std::size_t start, int count, Pixel&& pixel) {
-    std::uint64_t* keys = target.rank_keys + start;
-    std::uint32_t* ties = Ties ? target.rank_ties + start : nullptr;
-    glm::vec3* pixels = target.image.pixels.data() + start;
-    for (int k = 0; k < count; ++k) {
-        write_if_ranked_later<Ties>(keys, ties, pixels, k, target.key, target.tie, pixel(k));
-    }
-}
-
 /// A span of 1 to 3 samples in the fill in mesh order: its colours as
 /// fill_short_span() computes them, written by write_ranked(). False,
 /// with nothing written, if a colour is not finite: the caller then takes the
@@ -311,8 +313,9 @@ struct InterpolatedSpans {
     }
 };
 
-/// fill_samples()' span writers for flat (fill_flat(), fill_tiny_flat()):
-/// the triangle's one colour, as it is, in every sample of a span of any
+/// fill_samples()' span writers for one colour per triangle (fill_flat(),
+/// fill_tiny_flat(), fill_phong_unlit() with one colour or no ambient term):
+/// that colour, as it is, in every sample of a span of any
 /// length, eight pixels per group of stores, and in the fill in mesh order
 /// with no weights computed. A colour that is not finite goes sample by sample
 /// (whole()) or is declined (ranked()), so the replacements are counted as
