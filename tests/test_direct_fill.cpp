@@ -289,6 +289,56 @@ TEST_CASE("tiny triangles filled straight from the coverage screen paint painter
     }
 }
 
+TEST_CASE("tiny triangles of one colour, whose order is free, are written without a rank test") {
+    // One colour and no light per sample: every triangle paints the same bits,
+    // so the walk keeps no ranks (FillPlan::order_free) and a tiny draw writes
+    // its samples as they are (fill_tiny_samples()' unranked path; flat's span
+    // writer in the AVX2 float kernels). Painter's picture all the same. A
+    // plane of 100 x 100 quads, half of it over 40 x 48 pixels, each sample covered once, so
+    // a sample the path skipped would keep the background.
+    Scene scene = coloured_sphere_scene();
+    scene.mesh = {};
+    constexpr int kQuads = 100;
+    for (int j = 0; j <= kQuads; ++j) {
+        for (int i = 0; i <= kQuads; ++i) {
+            const double x = -1.0 + 2.0 * i / kQuads, y = -1.0 + 2.0 * j / kQuads;
+            scene.mesh.positions.push_back({x, y, 0.3 * x});
+        }
+    }
+    const auto at = [](int i, int j) { return static_cast<std::uint32_t>(j * (kQuads + 1) + i); };
+    for (int j = 0; j < kQuads; ++j) {
+        for (int i = 0; i < kQuads; ++i) {
+            scene.mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            scene.mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    }
+    scene.camera = Camera::look_at({0.0, 0.0, 2.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 1.0, 0.5, 0.5);
+    scene.image = {40, 48, {0.1f, 0.2f, 0.3f}};
+    scene.shader = Shader::flat;
+    scene.lighting = Lighting::only_ambient();
+    for (const test_render_modes::RenderMode& mode : test_render_modes::preset_precision_kernel_modes()) {
+        if (!mode.options.specialize_effects) continue;  // the general kernel is never order free
+        for (detail::KernelIsa isa : {detail::KernelIsa::baseline, detail::KernelIsa::avx2}) {
+            if (!detail::kernel_isa_available(isa)) continue;
+            detail::override_kernel_isa(isa);
+            INFO(mode.name << ", ISA " << detail::to_string(isa));
+            const std::uint64_t before = detail::tiny_draws_filled();
+            check_painters_picture(scene, mode.options);
+            // Ten walked renders, each filling a few hundred tiny triangles.
+            CHECK(detail::tiny_draws_filled() > before + 10 * 200);
+            // Clipped at the border, the plane fills the picture: no sample keeps the
+            // background. (The seed's border policy drops the triangles that cross it.)
+            if (mode.options.border == BorderPolicy::clip) {
+                const RenderResult result = render(scene, mode.options);
+                CHECK(result.stats.samples_shaded == std::uint64_t(40) * 48);
+                CHECK(std::none_of(result.image.pixels.begin(), result.image.pixels.end(),
+                                   [&](const glm::vec3& p) { return p == scene.image.background; }));
+            }
+        }
+        detail::override_kernel_isa(std::nullopt);
+    }
+}
+
 TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's order") {
     // A shuffled icosphere, reordered by the Renderer (mesh_order.hpp): the
     // walk is in the copy's order, the ties must stay the caller's.
