@@ -294,24 +294,10 @@ TEST_CASE("tiny triangles of one colour, whose order is free, are written withou
     // so the walk keeps no ranks (FillPlan::order_free) and a tiny draw writes
     // its samples as they are (fill_tiny_samples()' unranked path; flat's span
     // writer in the AVX2 float kernels). Painter's picture all the same. A
-    // plane of 100 x 100 quads, half of it over 40 x 48 pixels, each sample covered once, so
-    // a sample the path skipped would keep the background.
+    // plane of 100 x 100 quads, half of it over 40 x 48 pixels, each sample
+    // covered once, so a sample the path skipped would keep the background.
     Scene scene = coloured_sphere_scene();
-    scene.mesh = {};
-    constexpr int kQuads = 100;
-    for (int j = 0; j <= kQuads; ++j) {
-        for (int i = 0; i <= kQuads; ++i) {
-            const double x = -1.0 + 2.0 * i / kQuads, y = -1.0 + 2.0 * j / kQuads;
-            scene.mesh.positions.push_back({x, y, 0.3 * x});
-        }
-    }
-    const auto at = [](int i, int j) { return static_cast<std::uint32_t>(j * (kQuads + 1) + i); };
-    for (int j = 0; j < kQuads; ++j) {
-        for (int i = 0; i < kQuads; ++i) {
-            scene.mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            scene.mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
-    }
+    scene.mesh = test_meshes::grid_plane(100, 0.3, 0.0);
     scene.camera = Camera::look_at({0.0, 0.0, 2.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 1.0, 0.5, 0.5);
     scene.image = {40, 48, {0.1f, 0.2f, 0.3f}};
     scene.shader = Shader::flat;

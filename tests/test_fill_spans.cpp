@@ -13,6 +13,7 @@
 
 #include "fill_dispatch.hpp"
 #include "phongrast/render.hpp"
+#include "test_meshes.hpp"
 #include "test_render_modes.hpp"
 
 using namespace phongrast;
@@ -110,20 +111,12 @@ namespace {
 Scene fine_grid_scene() {
     Scene scene;
     constexpr int kQuads = 48;
-    for (int j = 0; j <= kQuads; ++j) {
-        for (int i = 0; i <= kQuads; ++i) {
-            const double x = -1.0 + 2.0 * i / kQuads, y = -1.0 + 2.0 * j / kQuads;
-            scene.mesh.positions.push_back({x, y, 0.6 * x - 0.3 * y});
-            scene.mesh.colors.push_back({0.5f + 0.5f * static_cast<float>(x), 0.5f + 0.5f * static_cast<float>(y),
-                                         static_cast<float>((i * 7 + j * 3) % 11) / 10.0f});
-        }
-    }
-    const auto at = [](int i, int j) { return static_cast<std::uint32_t>(j * (kQuads + 1) + i); };
-    for (int j = 0; j < kQuads; ++j) {
-        for (int i = 0; i < kQuads; ++i) {
-            scene.mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            scene.mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
+    scene.mesh = test_meshes::grid_plane(kQuads, 0.6, -0.3);
+    for (std::size_t v = 0; v < scene.mesh.positions.size(); ++v) {
+        const int i = static_cast<int>(v % (kQuads + 1)), j = static_cast<int>(v / (kQuads + 1));
+        const glm::dvec3& p = scene.mesh.positions[v];
+        scene.mesh.colors.push_back({0.5f + 0.5f * static_cast<float>(p.x), 0.5f + 0.5f * static_cast<float>(p.y),
+                                     static_cast<float>((i * 7 + j * 3) % 11) / 10.0f});
     }
     scene.camera = Camera::look_at({0.3, 0.2, 3.0}, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 1.2, 1.0, 1.0);
     scene.image = {131, 157, {0.0f, 0.0f, 0.0f}};

@@ -192,6 +192,24 @@ void color_by_position(Mesh& mesh) {
     }
 }
 
+Mesh grid_plane(int quads, double dz_dx, double dz_dy) {
+    Mesh mesh;
+    for (int j = 0; j <= quads; ++j) {
+        for (int i = 0; i <= quads; ++i) {
+            const double x = -1.0 + 2.0 * i / quads, y = -1.0 + 2.0 * j / quads;
+            mesh.positions.push_back({x, y, dz_dx * x + dz_dy * y});
+        }
+    }
+    const auto at = [quads](int i, int j) { return static_cast<std::uint32_t>(j * (quads + 1) + i); };
+    for (int j = 0; j < quads; ++j) {
+        for (int i = 0; i < quads; ++i) {
+            mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    }
+    return mesh;
+}
+
 Mesh rotated_about_x(Mesh mesh, double degrees) {
     const double angle = degrees * kPi / 180.0, c = std::cos(angle), s = std::sin(angle);
     for (glm::dvec3& p : mesh.positions) p = {p.x, c * p.y - s * p.z, s * p.y + c * p.z};

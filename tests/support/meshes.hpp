@@ -29,6 +29,11 @@ Mesh torus(int rings, int sides, double major, double minor);
 /// Throws std::invalid_argument unless 1 <= frequency <= 1023.
 Mesh icosphere(int frequency, double bump = 0.0);
 
+/// A plane over [-1, 1]^2 in x and y at z = dz_dx x + dz_dy y, cut into
+/// quads x quads squares of two triangles each, facing +z: vertex
+/// j (quads + 1) + i at x = -1 + 2 i / quads, y = -1 + 2 j / quads. No colours.
+Mesh grid_plane(int quads, double dz_dx, double dz_dy);
+
 /// Colours every vertex from its position in the bounding box (a smooth
 /// rainbow), replacing any colours the mesh had.
 void color_by_position(Mesh& mesh);
