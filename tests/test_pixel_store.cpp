@@ -1,5 +1,5 @@
 // The AVX2 kernels' pixel store (store_pixels_interleaved(), through store_group_interleaved(), in
-// src/fill_kernels.hpp): a batch's three channels written as packed
+// src/fill_span_writers.hpp): a batch's three channels written as packed
 // three-float pixels, exactly the span's, none past it. The image tests
 // compare whole pictures; this one checks every span length against
 // untouched neighbours on both sides.
