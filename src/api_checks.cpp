@@ -1,10 +1,12 @@
 #include "api_checks.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "finite.hpp"
+#include "mesh_scans.hpp"
 #include "image_size.hpp"
 
 namespace phongrast::detail {
@@ -66,11 +68,14 @@ void validate_image_request(const ImageSpec& image, const RenderOptions& options
 }
 
 void validate_user_normals(const Mesh& mesh) {
-    for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
-        if (!all_finite(mesh.normals[i])) {
-            throw std::invalid_argument("mesh.normals[" + std::to_string(i) + "]: " + vector_text(mesh.normals[i]) +
-                                        " is not finite (a zero normal is taken as \"compute this one\")");
-        }
+    const std::uint32_t finite[3] = {finite_magnitude_bits(), finite_magnitude_bits(), finite_magnitude_bits()};
+    const std::size_t i = first_bad(
+        mesh.normals.size(),
+        [&](std::size_t begin, std::size_t end) { return any_beyond(mesh.normals.data(), begin, end, finite); },
+        [&](std::size_t n) { return !all_finite(mesh.normals[n]); });
+    if (i < mesh.normals.size()) {
+        throw std::invalid_argument("mesh.normals[" + std::to_string(i) + "]: " + vector_text(mesh.normals[i]) +
+                                    " is not finite (a zero normal is taken as \"compute this one\")");
     }
 }
 

@@ -6,11 +6,9 @@
 #include <stdexcept>
 #include <string>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-
 #include "api_checks.hpp"
 #include "finite.hpp"
+#include "mesh_scans.hpp"
 #include "raster.hpp"
 #include "triangle_setup.hpp"
 #include "phongrast/mesh.hpp"
@@ -18,29 +16,6 @@
 namespace phongrast {
 namespace detail {
 namespace {
-
-/// The smallest i in [0, n) for which bad(i) holds, or n: the same answer as
-/// a loop from 0, found in parallel over blocks (large meshes are checked
-/// on every render).
-template <typename Bad>
-std::size_t first_bad(std::size_t n, const Bad& bad) {
-    constexpr std::size_t kBlock = 65536;
-    if (n <= kBlock) {  // one block: the same loop without a task (nor oneTBB's start-up for a small mesh)
-        for (std::size_t i = 0; i < n; ++i) {
-            if (bad(i)) return i;
-        }
-        return n;
-    }
-    return tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, n, kBlock), n,
-        [&](const tbb::blocked_range<std::size_t>& range, std::size_t found) {
-            for (std::size_t i = range.begin(); i < range.end() && i < found; ++i) {
-                if (bad(i)) return i;
-            }
-            return found;
-        },
-        [](std::size_t a, std::size_t b) { return std::min(a, b); });
-}
 
 void require_finite(const glm::vec3& value, const char* field) {
     if (!all_finite(value)) throw std::invalid_argument(std::string(field) + ": expected finite numbers");
@@ -135,8 +110,10 @@ glm::dvec3 colour_limit(const LitBound& bound, bool white_surface) {
 void validate_mesh(const Mesh& mesh, const glm::dvec3& colour_limit,
                    const std::function<double(const glm::vec3&)>& lit_value) {
     const std::string vertices = std::to_string(mesh.positions.size());
-    const std::size_t bad_position =
-        first_bad(mesh.positions.size(), [&](std::size_t i) { return !detail::all_finite(mesh.positions[i]); });
+    const std::size_t bad_position = first_bad(
+        mesh.positions.size(),
+        [&](std::size_t begin, std::size_t end) { return any_nonfinite(mesh.positions.data(), begin, end); },
+        [&](std::size_t i) { return !detail::all_finite(mesh.positions[i]); });
     if (bad_position < mesh.positions.size()) {
         throw std::invalid_argument("mesh: position of vertex " + std::to_string(bad_position) + " is not finite");
     }
@@ -145,7 +122,13 @@ void validate_mesh(const Mesh& mesh, const glm::dvec3& colour_limit,
                                     " vertices (expected one per vertex, or none)");
     }
     // Finite and within the limit in one pass (a NaN fails the comparison).
-    const std::size_t bad_color = first_bad(mesh.colors.size(), [&](std::size_t i) {
+    const std::uint32_t colour_bits[3] = {passing_magnitude_bits(colour_limit.x),
+                                          passing_magnitude_bits(colour_limit.y),
+                                          passing_magnitude_bits(colour_limit.z)};
+    const auto any_bad_colour = [&](std::size_t begin, std::size_t end) {
+        return any_beyond(mesh.colors.data(), begin, end, colour_bits);
+    };
+    const std::size_t bad_color = first_bad(mesh.colors.size(), any_bad_colour, [&](std::size_t i) {
         const glm::vec3& c = mesh.colors[i];
         return !(std::abs(double(c.x)) <= colour_limit.x && std::abs(double(c.y)) <= colour_limit.y &&
                  std::abs(double(c.z)) <= colour_limit.z) ||
@@ -168,7 +151,10 @@ void validate_mesh(const Mesh& mesh, const glm::dvec3& colour_limit,
         throw std::invalid_argument("mesh: " + std::to_string(mesh.triangles.size()) + " triangles, expected at most " +
                                     std::to_string(detail::DrawSpan::kMaxTriangles));
     }
-    const std::size_t bad_triangle = first_bad(mesh.triangles.size(), [&](std::size_t i) {
+    const auto any_bad_index = [&](std::size_t begin, std::size_t end) {
+        return any_index_at_least(mesh.triangles.data(), begin, end, mesh.positions.size());
+    };
+    const std::size_t bad_triangle = first_bad(mesh.triangles.size(), any_bad_index, [&](std::size_t i) {
         const Triangle& triangle = mesh.triangles[i];
         return std::max({triangle[0], triangle[1], triangle[2]}) >= mesh.positions.size();
     });
