@@ -5,6 +5,7 @@
 // do not depend on what else the machine is doing). --steps times the speed
 // steps of docs/performance.md against each other in one process.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -151,10 +153,35 @@ void time_screen_against_none(const phongrast::Scene& scene, const phongrast::Re
                 same && same_counts ? "yes" : "NO");
 }
 
+/// --after-idle MS: the frame that follows MS ms of sleep (as a thumbnail
+/// after its file is read, or a benchmark's frame after another renderer's)
+/// against a frame in a run of frames, in rounds of one process (sleep, idle
+/// frame, 8 untimed frames, busy frame); prints a Markdown row: medians in
+/// ms, idle / busy. One Renderer: both frames find the same memory; what the
+/// sleep costs is what the machine does meanwhile (caches other work fills,
+/// a pool's threads that stopped waiting for work: the frame right after the
+/// idle one was as slow on the Xeon, hence the untimed frames between).
+void time_after_idle(const phongrast::Scene& scene, const phongrast::RenderOptions& options, int repeat, int warmup,
+                     int idle_ms, const std::string& label) {
+    phongrast::Renderer renderer(options);
+    std::vector<double> idle, busy;
+    for (int round = 0; round < warmup + repeat; ++round) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(idle_ms));
+        const double after_idle = support::time_ms([&] { (void)renderer.render(scene); });
+        for (int frame = 0; frame < 8; ++frame) (void)renderer.render(scene);
+        const double in_a_run = support::time_ms([&] { (void)renderer.render(scene); });
+        if (round < warmup) continue;
+        idle.push_back(after_idle);
+        busy.push_back(in_a_run);
+    }
+    std::printf("| %s | %d | %.3f | %.3f | %.2f |\n", label.c_str(), idle_ms, support::median(idle),
+                support::median(busy), support::median(idle) / support::median(busy));
+}
+
 struct Settings {
     std::string name = "icosphere-9.7k", shader = "phong", mode = "exact", precision = "float";
     std::string overdraw = "auto", isa = "best", lighting, dump, walk = "auto";
-    int rows = 0, threads = 1, repeat = 5, warmup = 1;
+    int rows = 0, threads = 1, repeat = 5, warmup = 1, after_idle_ms = -1;
     bool steps = false, walk_against_sorted = false, screen_against_none = false, stages = false;
 };
 
@@ -245,6 +272,10 @@ int main(int argc, char** argv) {
                  "triangle in interleaved rounds in "
                  "this process; print a Markdown row: wall and CPU-time medians in ms, screened / not, triangles that "
                  "cover no sample, same image and counts");
+    app.add_option("--after-idle", s.after_idle_ms,
+                   "time the frame after MS ms of sleep against one in a run of frames, in rounds in this process; "
+                   "print a Markdown row: idle ms, medians in ms, idle / busy")
+        ->check(CLI::Range(0, 10000));
     app.add_flag("--stages", s.stages,
                  "also print the median time of each stage of the render pass (vertices, set-up, painter's order, "
                  "binning, fill, walks, ...) and the rest of the frame");
@@ -270,6 +301,9 @@ int main(int argc, char** argv) {
         } else if (s.screen_against_none) {
             time_screen_against_none(named.scene, options, s.repeat, s.warmup,
                                      s.name + " | " + s.shader + " | " + s.mode + " | " + std::to_string(s.threads));
+        } else if (s.after_idle_ms >= 0) {
+            time_after_idle(named.scene, options, s.repeat, s.warmup, s.after_idle_ms,
+                            s.name + " | " + s.shader + " | " + s.mode + " | " + std::to_string(s.threads));
         } else if (s.steps) {
             time_steps(named.scene, options, s.repeat, s.warmup,
                        s.name + " | " + s.shader + " | " + s.mode + " | " + std::to_string(s.threads));
