@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -36,12 +37,18 @@ struct Settings {
     support::SpeedSceneSelection selection;
     std::string images_dir;
     std::string order = "generator";  ///< the meshes' order (bench/mesh_orders.hpp)
+    bool warm_too = false;  ///< also time phongrast exact right after its own frame (warm_lines)
 };
 
 /// phongrast (exact and seed) and llvmpipe on one scene and shader, in
 /// interleaved rounds: prints the table row, returns the image agreement line.
+/// With `warm_line`, each round also times phongrast exact again right after
+/// its own frame (the exact frame of the table follows llvmpipe's, whose
+/// work leaves the caches and branch predictors to it) and writes the two
+/// medians there.
 std::string compare(support::LlvmpipeRenderer& llvmpipe, NamedScene& named, phongrast::Shader shader, int threads,
-                    int repeat, double fill_seconds, int max_rounds, const std::string& images_dir) {
+                    int repeat, double fill_seconds, int max_rounds, const std::string& images_dir,
+                    std::string* warm_line) {
     phongrast::Scene& scene = named.scene;
     scene.shader = shader;
     phongrast::RenderOptions exact = phongrast::RenderOptions::exact();
@@ -60,19 +67,34 @@ std::string compare(support::LlvmpipeRenderer& llvmpipe, NamedScene& named, phon
     phongrast::Image phongrast_image;
     std::vector<double> sort_s;
     llvmpipe.load(scene);
-    const std::vector<double> medians = support::interleaved_medians_filling(
-        fill_seconds, repeat, max_rounds, {[&] { return time_phongrast(exact_renderer, &phongrast_image); },
-                    [&] { return time_phongrast(seed_renderer, nullptr); },
-                    [&] {
-                        const support::FrameTimes times = llvmpipe.draw();
-                        sort_s.push_back(times.sort);
-                        return times.total;
-                    }});
+    std::vector<std::function<double()>> contenders{
+        [&] { return time_phongrast(exact_renderer, &phongrast_image); },
+        [&] { return time_phongrast(seed_renderer, nullptr); },
+        [&] {
+            const support::FrameTimes times = llvmpipe.draw();
+            sort_s.push_back(times.sort);
+            return times.total;
+        }};
+    if (warm_line != nullptr) {
+        contenders.insert(contenders.begin() + 1, [&] { return time_phongrast(exact_renderer, nullptr); });
+    }
+    std::vector<double> medians = support::interleaved_medians_filling(fill_seconds, repeat, max_rounds, contenders);
+    const double exact_warm_s = warm_line != nullptr ? medians[1] : 0.0;
+    if (warm_line != nullptr) medians.erase(medians.begin() + 1);
     const double exact_s = medians[0], seed_s = medians[1], llvmpipe_s = medians[2];
     sort_s.erase(sort_s.begin());  // the warm-up frame
     const phongrast::Image llvmpipe_image = llvmpipe.image();
 
     const double exact_ratio = exact_s / llvmpipe_s;
+    if (warm_line != nullptr) {
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "%s %s: exact %.2f ms after llvmpipe's frame, %.2f right after its own (x %.2f); "
+                      "warm / llvmpipe %.3f",
+                      named.name.c_str(), phongrast::to_string(shader), 1e3 * exact_s, 1e3 * exact_warm_s,
+                      exact_s / exact_warm_s, exact_warm_s / llvmpipe_s);
+        *warm_line = text;
+    }
     const double seed_ratio = seed_s / llvmpipe_s;
     std::printf("| %s | %zu | %dx%d | %s | %d | %.2f | %.2f | %.2f (%.2f) | %.3f | %.3f | %s |\n", named.name.c_str(),
                 scene.mesh.triangles.size(), scene.image.columns, scene.image.rows, phongrast::to_string(shader),
@@ -106,7 +128,7 @@ void run(const Settings& settings) {
     std::printf("| scene | triangles | image | shader | threads | phongrast exact ms | phongrast seed ms | "
                 "llvmpipe ms (of which sort) | exact / llvmpipe | seed / llvmpipe | goal <= 0.25 |\n");
     std::printf("|---|---:|---|---|---:|---:|---:|---:|---:|---:|---|\n");
-    std::vector<std::string> notes, agreement_lines;
+    std::vector<std::string> notes, agreement_lines, warm_lines;
     // One scene in memory at a time: the 8M-triangle mesh alone is about 0.4 GB.
     for (const std::string& name : support::speed_scene_names(settings.selection, notes)) {
         NamedScene named = support::speed_scene(name);
@@ -120,11 +142,18 @@ void run(const Settings& settings) {
         const int repeat = huge ? std::min(settings.repeat, settings.huge_repeat) : settings.repeat;
         const int max_rounds = huge ? repeat : std::max(repeat, kMaxRounds);
         for (phongrast::Shader shader : {phongrast::Shader::gouraud, phongrast::Shader::phong}) {
+            std::string warm_line;
             agreement_lines.push_back(compare(llvmpipe, named, shader, settings.threads, repeat, settings.seconds,
-                                              max_rounds, settings.images_dir));
+                                              max_rounds, settings.images_dir,
+                                              settings.warm_too ? &warm_line : nullptr));
+            if (settings.warm_too) warm_lines.push_back(warm_line);
         }
     }
     for (const std::string& note : notes) std::cerr << "bench_llvmpipe: " << note << "\n";
+    if (settings.warm_too) {
+        std::printf("\nphongrast exact after llvmpipe's frame (the table) and right after its own frame (--warm-too):\n");
+        for (const std::string& line : warm_lines) std::printf("- %s\n", line.c_str());
+    }
     std::printf("\nImage agreement, phongrast RenderOptions::exact() against llvmpipe, colours clamped to [0,1]:\n");
     for (const std::string& line : agreement_lines) std::printf("- %s\n", line.c_str());
 }
@@ -150,6 +179,8 @@ int main(int argc, char** argv) {
     app.add_option("--images", settings.images_dir, "write each scene's two renders and a difference heat map here");
     app.add_option("--order", settings.order, "the meshes' order: generator, spatial or shuffled (bench/mesh_orders.hpp)")
         ->check(CLI::IsMember(phongrast_bench::mesh_order_names()));
+    app.add_flag("--warm-too", settings.warm_too,
+                 "also time phongrast exact right after its own frame in each round, and list both medians");
     CLI11_PARSE(app, argc, argv);
     settings.selection.large = !no_large;
     settings.selection.huge = !no_huge;
