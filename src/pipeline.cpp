@@ -106,20 +106,29 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     stats.effects = effects;
     StageClock clock;
 
-    // Vertex stage.
-    const bool need_normals = effects.normals || !options.specialize_effects || out.aov_planes.normal;
-    transform_vertices(scene.mesh, out.caller_vertices, view, need_normals, memory.vertex_stage, memory.vertices,
-                       progress);
-    clock.lap(Stage::vertices);
-    place_near_plane(view, memory.vertices.screen);
-    const HiddenBackFaces cull = back_faces_to_cull(scene, options, view, memory.vertices);
-    stats.back_faces_culled = cull != HiddenBackFaces::unknown;
     build_light_rig(scene, view.frame, memory.rig);
     const PointShader<Real> point_shader{&memory.rig, effects, options.specialize_effects};
     // Several materials: each triangle and vertex names its own (assembly).
     const bool several = assembled != nullptr && !assembled->single_surface();
-    if (several) build_surface_shaders(scene, *assembled, view, point_shader, memory);
     const bool textured = assembled != nullptr && assembled->textured();
+    // Flat and Gouraud on textured faces light A and S apart.
+    const bool in_parts = textured && scene.shader != Shader::phong;
+    const bool exact_gouraud = scene.shader == Shader::gouraud && options.light_vectors == LightVectors::shaded_point;
+    // Exact Gouraud that lights each vertex with its ambient term alone: the
+    // transform computes it as it writes the vertex's colour (light_vertices()
+    // would read every vertex again for it: 3-4 ms of the 1.3M sphere's frame).
+    const bool lit_in_transform = exact_gouraud && !in_parts && !several &&
+                                  lights_ambient_only(point_shader, VertexMaterials<Real>{});
+
+    // Vertex stage.
+    const bool need_normals = effects.normals || !options.specialize_effects || out.aov_planes.normal;
+    transform_vertices(scene.mesh, out.caller_vertices, view, need_normals, memory.vertex_stage, memory.vertices,
+                       progress, lit_in_transform && effects.ambient ? &memory.rig.ambient_factor : nullptr);
+    clock.lap(Stage::vertices);
+    place_near_plane(view, memory.vertices.screen);
+    const HiddenBackFaces cull = back_faces_to_cull(scene, options, view, memory.vertices);
+    stats.back_faces_culled = cull != HiddenBackFaces::unknown;
+    if (several) build_surface_shaders(scene, *assembled, view, point_shader, memory);
     if (textured) {
         // The pass has `density` samples per pixel along each axis (the
         // ordered grid's s, or 1 for each rotated-grid pass); a sample's
@@ -134,8 +143,6 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     const bool texcoords_in_lit = assembled != nullptr && !assembled->texcoords.empty() &&
                                   (scene.shader != Shader::gouraud || textured);
     if (texcoords_in_lit) put_texcoords_in_lit(*assembled, memory);
-    // Flat and Gouraud on textured faces light A and S apart.
-    const bool in_parts = textured && scene.shader != Shader::phong;
     if (in_parts) build_part_shaders(scene, *assembled, view, point_shader, memory);
     FillPlan<Real> fill_plan = plan_fill(scene, options, effects, several ? memory.surface_rigs[0] : memory.rig,
                                          textured ? memory.surface_textures.data() : nullptr, &colors);
@@ -145,7 +152,6 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     const ShadingParts<Real> parts{in_parts ? memory.surface_textures.data() : nullptr,
                                    in_parts ? memory.colour_part_shaders.data() : nullptr,
                                    in_parts ? memory.specular_part_shaders.data() : nullptr};
-    const bool exact_gouraud = scene.shader == Shader::gouraud && options.light_vectors == LightVectors::shaded_point;
     clock.lap(Stage::faces);
     if (exact_gouraud && in_parts) {
         light_vertices_in_parts(point_shader, vertex_materials, parts, memory.vertices.varyings,
@@ -153,7 +159,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
         count_term_evaluations(scene, options, effects, memory.vertices.varyings.size(), LitPoints::outside_the_fill,
                                stats);
     } else if (exact_gouraud) {
-        light_vertices(point_shader, vertex_materials, memory.vertices.varyings, memory.vertex_stage);
+        if (!lit_in_transform) light_vertices(point_shader, vertex_materials, memory.vertices.varyings, memory.vertex_stage);
         count_term_evaluations(scene, options, effects, memory.vertices.varyings.size(), LitPoints::outside_the_fill,
                                stats);
     }

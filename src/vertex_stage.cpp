@@ -56,10 +56,12 @@ void camera_normals(const CameraFrame& frame, const glm::vec3* normals, std::siz
 }
 
 /// Transforms vertices first .. first + n - 1, whose arrays are positions[0 .. n-1]
-/// and likewise `colors` (null: white) and `normals` (null: none needed, zero).
+/// and likewise `colors` (null: white) and `normals` (null: none needed, zero);
+/// `lit` as transform_vertices() says.
 template <typename Real>
 void transform_span(const glm::dvec3* positions, const glm::vec3* colors, const glm::vec3* normals,
-                    std::size_t first, std::size_t n, const View& view, TransformedVertices<Real>& out) {
+                    std::size_t first, std::size_t n, const View& view, const Vec3<Real>* ambient_lit,
+                    TransformedVertices<Real>& out) {
     const CameraFrame& frame = view.frame;
     double x[kTransformLanes], y[kTransformLanes], z[kTransformLanes], column[kTransformLanes], row[kTransformLanes];
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -78,6 +80,7 @@ void transform_span(const glm::dvec3* positions, const glm::vec3* colors, const 
             v.position = Vec3<Real>(static_cast<Real>(x[k]), static_cast<Real>(y[k]), static_cast<Real>(z[k]));
             v.color = colors == nullptr ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[done + k]);
             v.lit = Vec3<Real>(Real(0));
+            if (ambient_lit != nullptr) v.lit += *ambient_lit * v.color;  // shade_terms()' ambient term
         }
     }
     if (normals != nullptr) {
@@ -91,7 +94,8 @@ void transform_span(const glm::dvec3* positions, const glm::vec3* colors, const 
 /// at source[i] (CallerVertices), gathered kGatherLanes at a time.
 template <typename Real>
 void transform_gathered(const Mesh& caller, const std::uint32_t* source, const std::vector<glm::vec3>* normals,
-                        std::size_t begin, std::size_t end, const View& view, TransformedVertices<Real>& out) {
+                        std::size_t begin, std::size_t end, const View& view, const Vec3<Real>* ambient_lit,
+                        TransformedVertices<Real>& out) {
     glm::dvec3 positions[kGatherLanes];
     glm::vec3 colors[kGatherLanes], gathered_normals[kGatherLanes];
     const bool coloured = !caller.colors.empty();
@@ -113,7 +117,7 @@ void transform_gathered(const Mesh& caller, const std::uint32_t* source, const s
             if (normals != nullptr) prefetch_object(&(*normals)[source[i]]);
         }
         transform_span(positions, coloured ? colors : nullptr, normals != nullptr ? gathered_normals : nullptr,
-                       first, n, view, out);
+                       first, n, view, ambient_lit, out);
     }
 }
 
@@ -142,7 +146,8 @@ glm::dvec2 View::sample_from_camera(const glm::dvec3& point_camera) const {
 
 template <typename Real>
 void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const View& view, bool need_normals,
-                        VertexStageMemory<Real>& memory, TransformedVertices<Real>& out, ProgressMonitor& progress) {
+                        VertexStageMemory<Real>& memory, TransformedVertices<Real>& out, ProgressMonitor& progress,
+                        const Vec3<Real>* ambient_lit) {
     const bool gathered = caller.mesh != nullptr;
     const Mesh& arrays = gathered ? *caller.mesh : mesh;
     const std::size_t count = arrays.positions.size();
@@ -181,11 +186,12 @@ void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const Vi
                       [&](const tbb::blocked_range<std::size_t>& range) {
         if (progress.cancelled()) return;
         if (gathered) {
-            transform_gathered(arrays, caller.source, normals, range.begin(), range.end(), view, out);
+            transform_gathered(arrays, caller.source, normals, range.begin(), range.end(), view, ambient_lit, out);
         } else {
             const std::size_t first = range.begin();
             transform_span(arrays.positions.data() + first, arrays.colors.empty() ? nullptr : arrays.colors.data() + first,
-                           normals != nullptr ? normals->data() + first : nullptr, first, range.size(), view, out);
+                           normals != nullptr ? normals->data() + first : nullptr, first, range.size(), view,
+                           ambient_lit, out);
         }
         progress.piece_done();
     });
@@ -247,7 +253,7 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
     const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
     if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
     const bool lanes = shader.specialized && shader.effects.normals && shader.rig->active_lights.size() <= kMaxLaneLights;
-    const bool unlit = !shader.reads_position_and_normal() && materials.vertex_surfaces == nullptr;
+    const bool unlit = lights_ambient_only(shader, materials);
     // Scratch per block, not per thread: which worker runs which block changes
     // from frame to frame, and per-thread scratch would then allocate.
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
@@ -297,7 +303,8 @@ void light_vertices_in_parts(const PointShader<Real>& shader, const VertexMateri
 
 #define PHONGRAST_INSTANTIATE_VERTEX_STAGE(Real)                                                               \
     template void transform_vertices<Real>(const Mesh&, const CallerVertices&, const View&, bool,               \
-                                           VertexStageMemory<Real>&, TransformedVertices<Real>&, ProgressMonitor&); \
+                                           VertexStageMemory<Real>&, TransformedVertices<Real>&, ProgressMonitor&,  \
+                                           const Vec3<Real>*);                                                   \
     template void build_light_rig<Real>(const Scene&, const CameraFrame&, LightRig<Real>&);                     \
     template void build_light_rig<Real>(const Scene&, const PhongMaterial&, const CameraFrame&, LightRig<Real>&); \
     template void light_vertices<Real>(const PointShader<Real>&, const VertexMaterials<Real>&,                  \
