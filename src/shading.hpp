@@ -143,6 +143,16 @@ struct PointShader {
         return specialized ? shade_with(vectors, normal, color) : shade_general(*rig, vectors, normal, color);
     }
 
+    /// shade_prepared() for a shader that reads no position or normal
+    /// (!reads_position_and_normal(): specialised, neither diffuse nor
+    /// specular): shade_with()'s ambient-only or black case, inline, for the
+    /// callers that light a point per triangle or corner.
+    Vec3<Real> shade_unlit(const LightVectorsAt<Real>& unread_vectors, const Vec3<Real>& color) const {
+        const Vec3<Real> no_normal(Real(0));
+        return effects.ambient ? shade_terms<Real, true, false, false>(*rig, unread_vectors, no_normal, color)
+                               : shade_terms<Real, false, false, false>(*rig, unread_vectors, no_normal, color);
+    }
+
     /// The specialised path with `vectors` already computed for the active
     /// lights (and the eye when specular is on).
     Vec3<Real> shade_with(const LightVectorsAt<Real>& vectors, const Vec3<Real>& normal,

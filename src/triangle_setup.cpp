@@ -445,7 +445,8 @@ private:
             color += vertices_.varyings[index].color;
         }
         const Vec3<Real> surface = in_.fill_constants.uniform_color ? in_.fill_constants.color : color / Real(3);
-        return lighting(vectors_, centroid, reads_normal ? safe_normalize<Real>(normal) : normal, surface);
+        if (!reads_normal) return lighting.shade_unlit(vectors_, surface);  // the same terms, no call
+        return lighting(vectors_, centroid, safe_normalize<Real>(normal), surface);
     }
 
     // Gouraud with the seed's centroid vectors: lights the triangle's own
@@ -454,6 +455,10 @@ private:
     std::uint64_t light_corners(Varyings<Real>* const corners[3], const Vec3<Real>& centroid) const {
         if (in_.options.light_vectors != LightVectors::triangle_centroid) return 0;
         const PointShader<Real>& lighting = shader();
+        if (!lighting.reads_position_and_normal()) {
+            for (int i = 0; i < 3; ++i) corners[i]->lit = lighting.shade_unlit(vectors_, corners[i]->color);
+            return 3;
+        }
         lighting.compute_vectors(vectors_, centroid);  // the same vectors for all three corners
         for (int i = 0; i < 3; ++i) {
             Varyings<Real>& v = *corners[i];
