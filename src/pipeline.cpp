@@ -123,7 +123,7 @@ void render_pass(const Scene& scene, const AssembledScene* assembled, const Rend
     // Vertex stage.
     const bool need_normals = effects.normals || !options.specialize_effects || out.aov_planes.normal;
     transform_vertices(scene.mesh, out.caller_vertices, view, need_normals, memory.vertex_stage, memory.vertices,
-                       progress, lit_in_transform && effects.ambient ? &memory.rig.ambient_factor : nullptr);
+                       progress, lit_in_transform ? &point_shader : nullptr);
     clock.lap(Stage::vertices);
     place_near_plane(view, memory.vertices.screen);
     const HiddenBackFaces cull = back_faces_to_cull(scene, options, view, memory.vertices);

@@ -60,9 +60,10 @@ void camera_normals(const CameraFrame& frame, const glm::vec3* normals, std::siz
 /// `lit` as transform_vertices() says.
 template <typename Real>
 void transform_span(const glm::dvec3* positions, const glm::vec3* colors, const glm::vec3* normals,
-                    std::size_t first, std::size_t n, const View& view, const Vec3<Real>* ambient_lit,
+                    std::size_t first, std::size_t n, const View& view, const PointShader<Real>* unlit_shader,
                     TransformedVertices<Real>& out) {
     const CameraFrame& frame = view.frame;
+    const LightVectorsAt<Real> unread_vectors;  // shade_unlit() reads none
     double x[kTransformLanes], y[kTransformLanes], z[kTransformLanes], column[kTransformLanes], row[kTransformLanes];
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t done = 0; done < n; done += kTransformLanes) {
@@ -79,8 +80,8 @@ void transform_span(const glm::dvec3* positions, const glm::vec3* colors, const 
             Varyings<Real>& v = out.varyings[first + done + k];
             v.position = Vec3<Real>(static_cast<Real>(x[k]), static_cast<Real>(y[k]), static_cast<Real>(z[k]));
             v.color = colors == nullptr ? Vec3<Real>(Real(1)) : Vec3<Real>(colors[done + k]);
-            v.lit = Vec3<Real>(Real(0));
-            if (ambient_lit != nullptr) v.lit += *ambient_lit * v.color;  // shade_terms()' ambient term
+            v.lit = unlit_shader != nullptr ? unlit_shader->shade_unlit(unread_vectors, v.color)
+                                            : Vec3<Real>(Real(0));
         }
     }
     if (normals != nullptr) {
@@ -94,7 +95,7 @@ void transform_span(const glm::dvec3* positions, const glm::vec3* colors, const 
 /// at source[i] (CallerVertices), gathered kGatherLanes at a time.
 template <typename Real>
 void transform_gathered(const Mesh& caller, const std::uint32_t* source, const std::vector<glm::vec3>* normals,
-                        std::size_t begin, std::size_t end, const View& view, const Vec3<Real>* ambient_lit,
+                        std::size_t begin, std::size_t end, const View& view, const PointShader<Real>* unlit_shader,
                         TransformedVertices<Real>& out) {
     glm::dvec3 positions[kGatherLanes];
     glm::vec3 colors[kGatherLanes], gathered_normals[kGatherLanes];
@@ -117,7 +118,7 @@ void transform_gathered(const Mesh& caller, const std::uint32_t* source, const s
             if (normals != nullptr) prefetch_object(&(*normals)[source[i]]);
         }
         transform_span(positions, coloured ? colors : nullptr, normals != nullptr ? gathered_normals : nullptr,
-                       first, n, view, ambient_lit, out);
+                       first, n, view, unlit_shader, out);
     }
 }
 
@@ -147,7 +148,7 @@ glm::dvec2 View::sample_from_camera(const glm::dvec3& point_camera) const {
 template <typename Real>
 void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const View& view, bool need_normals,
                         VertexStageMemory<Real>& memory, TransformedVertices<Real>& out, ProgressMonitor& progress,
-                        const Vec3<Real>* ambient_lit) {
+                        const PointShader<Real>* unlit_shader) {
     const bool gathered = caller.mesh != nullptr;
     const Mesh& arrays = gathered ? *caller.mesh : mesh;
     const std::size_t count = arrays.positions.size();
@@ -186,12 +187,12 @@ void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const Vi
                       [&](const tbb::blocked_range<std::size_t>& range) {
         if (progress.cancelled()) return;
         if (gathered) {
-            transform_gathered(arrays, caller.source, normals, range.begin(), range.end(), view, ambient_lit, out);
+            transform_gathered(arrays, caller.source, normals, range.begin(), range.end(), view, unlit_shader, out);
         } else {
             const std::size_t first = range.begin();
             transform_span(arrays.positions.data() + first, arrays.colors.empty() ? nullptr : arrays.colors.data() + first,
                            normals != nullptr ? normals->data() + first : nullptr, first, range.size(), view,
-                           ambient_lit, out);
+                           unlit_shader, out);
         }
         progress.piece_done();
     });
@@ -221,39 +222,12 @@ void build_light_rig(const Scene& scene, const PhongMaterial& material, const Ca
     }
 }
 
-namespace {
-
-/// Lights [begin, end) with a specialised shader that has neither diffuse nor
-/// specular (ambient only, or black): shade_terms() itself, its effect set
-/// chosen once for the block instead of a call and a switch per vertex. The
-/// stage went from 5.6 to 3.0 ms on the 1.3M sphere's 655,362 vertices
-/// (Gouraud, ambient only, 1 thread, the Xeon, `--stages`).
-template <typename Real>
-void light_vertices_ambient_only(const PointShader<Real>& shader, FrameVector<Varyings<Real>>& varyings,
-                                 std::size_t begin, std::size_t end, const LightVectorsAt<Real>& unread_vectors) {
-    const LightRig<Real>& rig = *shader.rig;
-    if (!shader.effects.ambient) {
-        for (std::size_t i = begin; i != end; ++i) {
-            varyings[i].lit = shade_terms<Real, false, false, false>(rig, unread_vectors, varyings[i].normal,
-                                                                     varyings[i].color);
-        }
-        return;
-    }
-    for (std::size_t i = begin; i != end; ++i) {
-        varyings[i].lit =
-            shade_terms<Real, true, false, false>(rig, unread_vectors, varyings[i].normal, varyings[i].color);
-    }
-}
-
-}  // namespace
-
 template <typename Real>
 void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
                     FrameVector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory) {
     const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
     if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
     const bool lanes = shader.specialized && shader.effects.normals && shader.rig->active_lights.size() <= kMaxLaneLights;
-    const bool unlit = lights_ambient_only(shader, materials);
     // Scratch per block, not per thread: which worker runs which block changes
     // from frame to frame, and per-thread scratch would then allocate.
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
@@ -262,10 +236,6 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
         const std::size_t end = std::min(varyings.size(), (block + 1) * kLightingBlock);
         if (lanes) {
             light_vertex_lanes_dispatched(shader, materials, varyings, begin, end, vectors);
-            return;
-        }
-        if (unlit) {
-            light_vertices_ambient_only(shader, varyings, begin, end, vectors);
             return;
         }
         for (std::size_t i = begin; i != end; ++i) {
@@ -304,7 +274,7 @@ void light_vertices_in_parts(const PointShader<Real>& shader, const VertexMateri
 #define PHONGRAST_INSTANTIATE_VERTEX_STAGE(Real)                                                               \
     template void transform_vertices<Real>(const Mesh&, const CallerVertices&, const View&, bool,               \
                                            VertexStageMemory<Real>&, TransformedVertices<Real>&, ProgressMonitor&,  \
-                                           const Vec3<Real>*);                                                   \
+                                           const PointShader<Real>*);                                            \
     template void build_light_rig<Real>(const Scene&, const CameraFrame&, LightRig<Real>&);                     \
     template void build_light_rig<Real>(const Scene&, const PhongMaterial&, const CameraFrame&, LightRig<Real>&); \
     template void light_vertices<Real>(const PointShader<Real>&, const VertexMaterials<Real>&,                  \

@@ -78,15 +78,13 @@ struct CallerVertices {
 /// reads the caller's arrays instead (which then have normals to use as they
 /// are, or `need_normals` is false: mesh_order.cpp sees to it).
 /// Reports progress, and stops early when the render is cancelled. Each
-/// vertex's `lit` is zero, or with `ambient_lit` its ambient term, 0 +
-/// *ambient_lit x its colour: what light_vertices() gives it under a
-/// specialised shader with neither diffuse nor specular (the same
-/// operations), computed here while the colour is at hand instead of in a
-/// pass of its own over every vertex.
+/// vertex's `lit` is zero, or with `unlit_shader` (one that
+/// lights_ambient_only()) its shade_unlit() colour, computed here while the
+/// colour is at hand instead of in a pass of light_vertices() over every vertex.
 template <typename Real>
 void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const View& view, bool need_normals,
                         VertexStageMemory<Real>& memory, TransformedVertices<Real>& out, ProgressMonitor& progress,
-                        const Vec3<Real>* ambient_lit = nullptr);
+                        const PointShader<Real>* unlit_shader = nullptr);
 
 /// An OpenCV camera's near plane: 1e-4 x the largest z_c of the vertices
 /// (`screen`, from transform_vertices()); other cameras' is set by View.
@@ -114,15 +112,17 @@ struct VertexMaterials {
 };
 
 /// Whether `shader` lights every vertex with its ambient term alone (a
-/// specialised shader with neither diffuse nor specular, one material): the
-/// case where transform_vertices() can compute light_vertices()' `lit`.
+/// specialised shader with neither diffuse nor specular, one material):
+/// transform_vertices() then lights them (its `unlit_shader`), not light_vertices().
 template <typename Real>
 bool lights_ambient_only(const PointShader<Real>& shader, const VertexMaterials<Real>& materials) {
     return !shader.reads_position_and_normal() && materials.vertex_surfaces == nullptr;
 }
 
 /// Gouraud with exact light vectors: each vertex's colour does not depend on
-/// the triangle, so it is lit once, into Varyings::lit, and shared.
+/// the triangle, so it is lit once, into Varyings::lit, and shared. (A shader
+/// that lights_ambient_only() is left to transform_vertices(); here it would
+/// take the general loop, a call per vertex.)
 template <typename Real>
 void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
                     FrameVector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory);
