@@ -13,7 +13,6 @@
 #include <cmath>
 #include <limits>
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace phongrast::detail {
@@ -122,6 +121,21 @@ void transform_gathered(const Mesh& caller, const std::uint32_t* source, const s
     }
 }
 
+/// light_vertices() of vertices [begin, end), with `vectors` as scratch.
+template <typename Real>
+void light_vertex_range(const PointShader<Real>& shader, const VertexMaterials<Real>& materials,
+                        FrameVector<Varyings<Real>>& varyings, std::size_t begin, std::size_t end,
+                        LightVectorsAt<Real>& vectors) {
+    if (shader.specialized && shader.effects.normals && shader.rig->active_lights.size() <= kMaxLaneLights) {
+        light_vertex_lanes_dispatched(shader, materials, varyings, begin, end, vectors);
+        return;
+    }
+    for (std::size_t i = begin; i != end; ++i) {
+        Varyings<Real>& v = varyings[i];
+        v.lit = materials.shader_of(shader, i)(vectors, v.position, v.normal, v.color);
+    }
+}
+
 }  // namespace
 
 View::View(const Camera& camera, int rows, int columns, glm::dvec2 offset, int samples_per_pixel)
@@ -148,7 +162,8 @@ glm::dvec2 View::sample_from_camera(const glm::dvec3& point_camera) const {
 template <typename Real>
 void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const View& view, bool need_normals,
                         VertexStageMemory<Real>& memory, TransformedVertices<Real>& out, ProgressMonitor& progress,
-                        const PointShader<Real>* unlit_shader) {
+                        const PointShader<Real>* unlit_shader, const PointShader<Real>* lit_shader) {
+    assert(unlit_shader == nullptr || lit_shader == nullptr);
     const bool gathered = caller.mesh != nullptr;
     const Mesh& arrays = gathered ? *caller.mesh : mesh;
     const std::size_t count = arrays.positions.size();
@@ -183,16 +198,23 @@ void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const Vi
     resize_polling(out.screen, count, progress.poll_function());
     resize_polling(out.varyings, count, progress.poll_function());
     progress.begin_stage(0.05, 0.1, (count + kTransformBlock - 1) / kTransformBlock);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kTransformBlock),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
+    const std::size_t blocks = (count + kTransformBlock - 1) / kTransformBlock;
+    // The lighting's scratch per block, not per thread (see light_vertices()).
+    if (lit_shader != nullptr && memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
         if (progress.cancelled()) return;
+        const std::size_t first = block * kTransformBlock, end = std::min(count, first + kTransformBlock);
         if (gathered) {
-            transform_gathered(arrays, caller.source, normals, range.begin(), range.end(), view, unlit_shader, out);
+            transform_gathered(arrays, caller.source, normals, first, end, view, unlit_shader, out);
         } else {
-            const std::size_t first = range.begin();
             transform_span(arrays.positions.data() + first, arrays.colors.empty() ? nullptr : arrays.colors.data() + first,
-                           normals != nullptr ? normals->data() + first : nullptr, first, range.size(), view,
+                           normals != nullptr ? normals->data() + first : nullptr, first, end - first, view,
                            unlit_shader, out);
+        }
+        if (lit_shader != nullptr) {
+            // While the block's varyings are still in cache (a pass of its own read them all again).
+            light_vertex_range(*lit_shader, VertexMaterials<Real>{}, out.varyings, first, end,
+                               memory.block_vectors[block]);
         }
         progress.piece_done();
     });
@@ -227,21 +249,12 @@ void light_vertices(const PointShader<Real>& shader, const VertexMaterials<Real>
                     FrameVector<Varyings<Real>>& varyings, VertexStageMemory<Real>& memory) {
     const std::size_t blocks = (varyings.size() + kLightingBlock - 1) / kLightingBlock;
     if (memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
-    const bool lanes = shader.specialized && shader.effects.normals && shader.rig->active_lights.size() <= kMaxLaneLights;
     // Scratch per block, not per thread: which worker runs which block changes
     // from frame to frame, and per-thread scratch would then allocate.
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
-        LightVectorsAt<Real>& vectors = memory.block_vectors[block];
         const std::size_t begin = block * kLightingBlock;
         const std::size_t end = std::min(varyings.size(), (block + 1) * kLightingBlock);
-        if (lanes) {
-            light_vertex_lanes_dispatched(shader, materials, varyings, begin, end, vectors);
-            return;
-        }
-        for (std::size_t i = begin; i != end; ++i) {
-            Varyings<Real>& v = varyings[i];
-            v.lit = materials.shader_of(shader, i)(vectors, v.position, v.normal, v.color);
-        }
+        light_vertex_range(shader, materials, varyings, begin, end, memory.block_vectors[block]);
     });
 }
 
@@ -274,7 +287,7 @@ void light_vertices_in_parts(const PointShader<Real>& shader, const VertexMateri
 #define PHONGRAST_INSTANTIATE_VERTEX_STAGE(Real)                                                               \
     template void transform_vertices<Real>(const Mesh&, const CallerVertices&, const View&, bool,               \
                                            VertexStageMemory<Real>&, TransformedVertices<Real>&, ProgressMonitor&,  \
-                                           const PointShader<Real>*);                                            \
+                                           const PointShader<Real>*, const PointShader<Real>*);                  \
     template void build_light_rig<Real>(const Scene&, const CameraFrame&, LightRig<Real>&);                     \
     template void build_light_rig<Real>(const Scene&, const PhongMaterial&, const CameraFrame&, LightRig<Real>&); \
     template void light_vertices<Real>(const PointShader<Real>&, const VertexMaterials<Real>&,                  \

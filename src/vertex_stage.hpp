@@ -78,13 +78,16 @@ struct CallerVertices {
 /// reads the caller's arrays instead (which then have normals to use as they
 /// are, or `need_normals` is false: mesh_order.cpp sees to it).
 /// Reports progress, and stops early when the render is cancelled. Each
-/// vertex's `lit` is zero, or with `unlit_shader` (one that
+/// vertex's `lit` is zero; or with `unlit_shader` (one that
 /// lights_ambient_only()) its shade_unlit() colour, computed here while the
-/// colour is at hand instead of in a pass of light_vertices() over every vertex.
+/// colour is at hand instead of in a pass of light_vertices() over every
+/// vertex; or with `lit_shader` (exact Gouraud, one material) what
+/// light_vertices() computes, each block of vertices lit right after its
+/// transform, while its varyings are still in cache. At most one of the two.
 template <typename Real>
 void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const View& view, bool need_normals,
                         VertexStageMemory<Real>& memory, TransformedVertices<Real>& out, ProgressMonitor& progress,
-                        const PointShader<Real>* unlit_shader = nullptr);
+                        const PointShader<Real>* unlit_shader = nullptr, const PointShader<Real>* lit_shader = nullptr);
 
 /// An OpenCV camera's near plane: 1e-4 x the largest z_c of the vertices
 /// (`screen`, from transform_vertices()); other cameras' is set by View.
