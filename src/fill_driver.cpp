@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -175,6 +176,30 @@ void fill_pixels(glm::vec3* out, std::size_t count, glm::vec3 colour) {
     for (; i < count; ++i) out[i] = colour;
 }
 
+/// fill_in_mesh_order() with the mesh in two halves: each sample takes the
+/// second half's colour where its rank there is higher (all of the second
+/// half's triangles come after the first's in mesh order, so an equal key
+/// is higher without ties), as one walk of the whole mesh would have written.
+template <typename Real>
+void merge_later_half(const FillMemory<Real>& memory, bool ties, Image& image) {
+    const std::uint64_t* keys = memory.rank_keys.data();
+    const std::uint64_t* later_keys = memory.later_rank_keys.data();
+    const std::uint32_t* tie = ties ? memory.rank_ties.data() : nullptr;
+    const std::uint32_t* later_tie = ties ? memory.later_rank_ties.data() : nullptr;
+    const glm::vec3* later = memory.later_half.pixels.data();
+    glm::vec3* pixels = image.pixels.data();
+    constexpr std::size_t kMergeGrain = std::size_t(1) << 16;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, image.pixels.size(), kMergeGrain),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+            const std::uint64_t key = later_keys[i];
+            const bool later_wins =
+                key != 0 && (key > keys[i] || (key == keys[i] && (tie == nullptr || later_tie[i] > tie[i])));
+            if (later_wins) pixels[i] = later[i];
+        }
+    });
+}
+
 }  // namespace
 
 template <typename Real>
@@ -297,34 +322,62 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
     const bool mapped = reserve_on_huge_pages(image.pixels, samples);
     resize_polling(image.pixels, samples, progress.poll_function(), !mapped);
     const bool ranked = !plan.order_free;
-    if (ranked) {
-        // Key 0 is no triangle's (farthest_first_key() gives it to a NaN
-        // only): "no colour yet", so the ties need no clearing.
-        assign_populated(memory.rank_keys, samples, std::uint64_t(0));
-        // The walk takes the triangles in mesh order, i.e. in the order of
-        // their ties, unless the mesh is a reordered copy (mesh_order.hpp).
-        if (original_triangle != nullptr && memory.rank_ties.size() < samples) memory.rank_ties.resize(samples);
-    }
-    // One walk per thread, each over its own rows (RowSplit).
+    const std::size_t chunks = (scene.mesh.triangles.size() + kSetupChunk - 1) / kSetupChunk;
+    // One walk per thread. Ranked, two or more walks take the mesh in two
+    // halves, each walk over its half's triangles that reach its rows (rows
+    // in parts as the walks pair up), the second half's ranks and colours
+    // apart, merged into the image after (merge_later_half()): each walk
+    // screens and reads only its own triangles, where walks over rows alone
+    // each screen all of them.
     const int forced_walks = mesh_order_fill_walks.load(std::memory_order_relaxed);
+    const int threads = forced_walks > 0 ? forced_walks : tbb::this_task_arena::max_concurrency();
+    const std::size_t halves = ranked && threads >= 2 && chunks >= 2 ? 2 : 1;
+    const std::size_t first_half_chunks = (chunks + 1) / 2;
     RowSplit& split = draws.direct_split;
     split_rows_by_triangles(scene.mesh.triangles, setup.vertices.screen, rows,
-                            forced_walks > 0 ? forced_walks : tbb::this_task_arena::max_concurrency(),
-                            draws.direct_split_work, split);
-    const std::size_t walks = static_cast<std::size_t>(split.parts());
+                            std::max(1, threads / static_cast<int>(halves)), draws.direct_split_work, split);
+    const std::size_t row_parts = static_cast<std::size_t>(split.parts());
+    const std::size_t walks = row_parts * halves;
+    if (ranked) {
+        // Key 0 is no triangle's (farthest_first_key() gives it to a NaN
+        // only): "no colour yet", so the ties need no clearing. Each walk
+        // clears its rows' keys; the buffers are only mapped here.
+        // The walk takes the triangles in mesh order, i.e. in the order of
+        // their ties, unless the mesh is a reordered copy (mesh_order.hpp).
+        reserve_populated(memory.rank_keys, samples);
+        memory.rank_keys.resize(samples);
+        if (original_triangle != nullptr && memory.rank_ties.size() < samples) memory.rank_ties.resize(samples);
+        if (halves == 2) {
+            reserve_populated(memory.later_rank_keys, samples);
+            memory.later_rank_keys.resize(samples);
+            if (original_triangle != nullptr && memory.later_rank_ties.size() < samples) {
+                memory.later_rank_ties.resize(samples);
+            }
+            memory.later_half.rows = rows;
+            memory.later_half.columns = columns;
+            reserve_populated(memory.later_half.pixels, samples);
+            memory.later_half.pixels.resize(samples);  // read only where a later key is set
+        }
+    }
     if (draws.direct_parts.size() < walks) draws.direct_parts.resize(walks);
-    const std::size_t chunks = (scene.mesh.triangles.size() + kSetupChunk - 1) / kSetupChunk;
-    progress.begin_stage(0.1, 1.0, chunks * walks);
+    progress.begin_stage(0.1, 1.0, chunks * row_parts);
     tbb::parallel_for(std::size_t(0), walks, [&](std::size_t walk) {
         if (progress.cancelled()) return;
-        const int row_begin = split.starts[walk], row_end = split.starts[walk + 1];
+        const std::size_t part = walk % row_parts, half = walk / row_parts;
+        const int row_begin = split.starts[part], row_end = split.starts[part + 1];
         const std::size_t first = static_cast<std::size_t>(row_begin) * static_cast<std::size_t>(columns);
         const std::size_t end = static_cast<std::size_t>(row_end) * static_cast<std::size_t>(columns);
-        fill_pixels(image.pixels.data() + first, end - first, scene.image.background);
-        FillTarget<Real> target{image, memory.depth_buffer, row_begin, row_end, false, 0, 0};
+        Image& written = half == 0 ? image : memory.later_half;
+        if (half == 0) fill_pixels(image.pixels.data() + first, end - first, scene.image.background);
+        FillTarget<Real> target{written, memory.depth_buffer, row_begin, row_end, false, 0, 0};
         if (ranked) {
-            target.rank_keys = memory.rank_keys.data();
-            if (original_triangle != nullptr) target.rank_ties = memory.rank_ties.data();
+            FrameVector<std::uint64_t>& keys = half == 0 ? memory.rank_keys : memory.later_rank_keys;
+            std::fill(keys.begin() + static_cast<std::ptrdiff_t>(first), keys.begin() + static_cast<std::ptrdiff_t>(end),
+                      std::uint64_t(0));
+            target.rank_keys = keys.data();
+            if (original_triangle != nullptr) {
+                target.rank_ties = half == 0 ? memory.rank_ties.data() : memory.later_rank_ties.data();
+            }
         }
         DirectFill<Real> fill;
         fill.kernel = plan.kernel;
@@ -336,11 +389,18 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
         fill.original_triangle = original_triangle;
         fill.ranked = ranked;
         fill.reads_varyings = !plan.constants.uniform_color;
-        set_up_and_fill(setup, fill, split, static_cast<int>(walk), scratch, progress);
+        if (halves == 2) {
+            fill.first_chunk = half == 0 ? 0 : first_half_chunks;
+            fill.end_chunk = half == 0 ? first_half_chunks : chunks;
+        }
+        set_up_and_fill(setup, fill, split, static_cast<int>(part), scratch, progress);
         scratch.samples_covered = target.covered;
         scratch.samples_shaded = target.samples;
         scratch.values_replaced = target.replaced;
     });
+    if (halves == 2 && !progress.cancelled()) {
+        merge_later_half(memory, original_triangle != nullptr, image);
+    }
     progress.throw_if_cancelled();
     std::uint64_t shaded = 0;
     for (std::size_t walk = 0; walk < walks; ++walk) {

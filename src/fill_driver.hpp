@@ -35,6 +35,11 @@ struct FillMemory {
     /// fill_in_mesh_order(): per sample, the painter's rank of its colour (FillTarget::rank_keys).
     FrameVector<std::uint64_t> rank_keys;
     FrameVector<std::uint32_t> rank_ties;
+    /// The same for the walks of the mesh's second half, and the colours they
+    /// wrote, merged into the image after the walks (fill_in_mesh_order()).
+    FrameVector<std::uint64_t> later_rank_keys;
+    FrameVector<std::uint32_t> later_rank_ties;
+    Image later_half;
 };
 
 /// How this render fills: the kernel, its constants and the strategy.

@@ -747,7 +747,7 @@ template <typename Real>
 void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill, const RowSplit& split, int part,
                      DirectScratch<Real>& scratch, ProgressMonitor& progress) {
     const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
-    const std::size_t chunks = (triangles.size() + kSetupChunk - 1) / kSetupChunk;
+    const std::size_t chunks = std::min(fill.end_chunk, (triangles.size() + kSetupChunk - 1) / kSetupChunk);
     const FrameVector<ScreenVertex>& screen = input.vertices.screen;
     ChunkVector<FillTriangle<Real>>& out = scratch.draws;
     out.clear();
@@ -836,7 +836,7 @@ void set_up_and_fill(const SetupInput<Real>& input, const DirectFill<Real>& fill
     TinyDraw<Real> tiny;
     tiny.surface = 0;
     Vec3<Real> flat_colour(Real(0));
-    for (std::size_t chunk = 0; chunk < chunks && !progress.cancelled(); ++chunk) {
+    for (std::size_t chunk = fill.first_chunk; chunk < chunks && !progress.cancelled(); ++chunk) {
         const std::size_t end = std::min(triangles.size(), (chunk + 1) * kSetupChunk);
         ScreenedBlock screening(screen_input, end, fills_tiny ? &tiny_block : nullptr);
         for (std::size_t t = chunk * kSetupChunk; t < end; ++t) {

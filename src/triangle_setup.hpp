@@ -161,6 +161,9 @@ struct DirectFill {
     const std::uint32_t* original_triangle = nullptr;
     bool ranked = true;
     bool reads_varyings = true;  ///< set-up or the kernel reads the corners' varyings (colours vary)
+    /// The walk's share of the mesh: its chunks [first_chunk, end_chunk) of
+    /// kSetupChunk triangles (clamped to the mesh's).
+    std::size_t first_chunk = 0, end_chunk = SIZE_MAX;
 };
 
 /// Splits `rows` rows into at most `parts` parts of about equal work, so
@@ -171,8 +174,8 @@ struct DirectFill {
 void split_rows_by_triangles(const std::vector<Triangle>& triangles, const FrameVector<ScreenVertex>& screen,
                              int rows, int parts, std::vector<double>& work, RowSplit& split);
 
-/// Set-up and fill in one walk of the mesh, on the calling thread, for the
-/// rows of part `part` of `split` (fill.target's rows): each triangle that
+/// Set-up and fill in one walk of the mesh (of fill's chunks of it), on the
+/// calling thread, for the rows of part `part` of `split` (fill.target's rows): each triangle that
 /// may reach them set up as set_up_triangles() sets it up, its draws filled
 /// at once and forgotten, so no draw record reaches memory and nothing is
 /// sorted or binned (painter's order is the rank test of `fill`). Sets

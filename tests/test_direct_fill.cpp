@@ -1,7 +1,8 @@
 // The fill in mesh order (fill_in_mesh_order(), fill_driver.hpp): an
 // ambient-only render sets up and fills each triangle in a walk of the mesh
 // (one per thread, each over its own rows), keeping painter's order by a
-// rank test per sample instead of a sort. It must paint painter's picture
+// rank test per sample instead of a sort; with two walks or more, the mesh
+// in two halves whose ranks and colours are merged after. It must paint painter's picture
 // bit for bit, with the same counts, whatever the shader, mode, precision,
 // colours, materials, ties of equal depth, clipping, supersampling, mesh
 // order, threads or walks; and it must be the path an ambient-only render takes.
@@ -391,6 +392,71 @@ TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's
         CHECK(same_bits(direct.image, walked.image));
         check_same_render_stats(direct.stats, sorted.stats);
         check_same_render_stats(direct.stats, walked.stats);
+    }
+    detail::set_reorder_min_triangles(previous_min);
+    detail::set_reorder_always(previous_always);
+}
+
+TEST_CASE("the mesh's two halves merge as one walk: ties across the halves in the caller's order") {
+    // Two overlapping grids in one plane facing the camera (every triangle's
+    // mean depth equal: ties decide every sample), 6,400 triangles (two
+    // chunks: two walks or more take the mesh in halves), shuffled. A
+    // Renderer reorders it (ties from the caller's order, not the walk's),
+    // render() does not (ties in mesh order).
+    const std::size_t previous_min = detail::set_reorder_min_triangles(0);
+    const bool previous_always = detail::set_reorder_always(true);
+    Scene scene = tied_squares_scene();
+    scene.mesh = Mesh{};
+    constexpr int kCells = 40;
+    for (int grid = 0; grid < 2; ++grid) {
+        const double shift = grid == 0 ? -1.0 : -0.8;  // the second grid over most of the first
+        const std::uint32_t first = static_cast<std::uint32_t>(scene.mesh.positions.size());
+        for (int y = 0; y <= kCells; ++y) {
+            for (int x = 0; x <= kCells; ++x) {
+                scene.mesh.positions.push_back({shift + 1.8 * x / kCells, shift + 1.8 * y / kCells, 0.0});
+                scene.mesh.colors.push_back(grid == 0 ? glm::vec3(0.9f, 0.1f + 0.02f * x, 0.1f)
+                                                      : glm::vec3(0.1f, 0.2f, 0.1f + 0.02f * y));
+            }
+        }
+        for (int y = 0; y < kCells; ++y) {
+            for (int x = 0; x < kCells; ++x) {
+                const std::uint32_t v = first + static_cast<std::uint32_t>(y * (kCells + 1) + x);
+                scene.mesh.triangles.push_back({v, v + 1, v + kCells + 2});
+                scene.mesh.triangles.push_back({v, v + kCells + 2, v + kCells + 1});
+            }
+        }
+    }
+    std::mt19937 random(11);
+    std::shuffle(scene.mesh.triangles.begin(), scene.mesh.triangles.end(), random);
+    REQUIRE(scene.mesh.triangles.size() > detail::kSetupChunk);
+    scene.image.rows = scene.image.columns = 96;
+    MeshOrderFill walk_any_size(detail::WalkChoice::always);
+    for (const Shader shader : {Shader::gouraud, Shader::flat}) {
+        scene.shader = shader;
+        INFO(to_string(shader));
+        RenderOptions options = RenderOptions::exact();
+        options.threads = 1;
+        RenderResult sorted;
+        {
+            MeshOrderFill forbidden(detail::WalkChoice::never);
+            sorted = render(scene, options);
+        }
+        for (const bool reordered : {true, false}) {
+            INFO((reordered ? "reordered by a Renderer" : "render()"));
+            Renderer renderer(options);
+            const auto render_once = [&] { return reordered ? renderer.render(scene) : render(scene, options); };
+            const RenderResult one_walk = render_once();
+            for (int walks : {2, 4}) {
+                MeshOrderWalks split(walks);
+                INFO(walks << " walks");
+                const std::uint64_t before = detail::passes_filled_in_mesh_order();
+                const RenderResult walked = render_once();
+                CHECK(detail::passes_filled_in_mesh_order() == before + 1);
+                CHECK(same_bits(sorted.image, walked.image));
+                check_same_render_stats(one_walk.stats, walked.stats);
+            }
+            CHECK(same_bits(sorted.image, one_walk.image));
+        }
     }
     detail::set_reorder_min_triangles(previous_min);
     detail::set_reorder_always(previous_always);
