@@ -298,16 +298,15 @@ bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs, double 
     case WalkChoice::by_triangle_size: break;
     }
     if (samples_per_triangle > kWalkMaxSamplesPerTriangle) return false;
-    // Two walks take about 1.2x their share each, where the sorted fill's
-    // whole set-up is shared (docs/performance.md): lit walks gain at two only
-    // where the walk fills tiny triangles with no set-up (TinyDraw: flat,
-    // exact Gouraud), ambient ones at two as well. The seed's Gouraud, which
-    // fills them too but lights their corners in batches, measured even at two
-    // (1.3M sphere: walks 122-124 ms, sorted 120-138) and stays sorted there.
+    // Lit walks gain at two only where the walk fills tiny triangles with no
+    // set-up (TinyDraw: flat, exact Gouraud), ambient ones at two as well. The
+    // seed's Gouraud, which fills them too but lights their corners in
+    // batches, gains only where they are tinier still (kSeedWalkMaxSamplesPerTriangle).
     const int forced_walks = mesh_order_fill_walks.load(std::memory_order_relaxed);
     const int walks = forced_walks > 0 ? forced_walks : tbb::this_task_arena::max_concurrency();
     return walks == 1 || !(plan.effects.diffuse || plan.effects.specular) ||
-           (plan.tiny_kernel != nullptr && !plan.seed_gouraud);
+           (plan.tiny_kernel != nullptr &&
+            (!plan.seed_gouraud || samples_per_triangle <= kSeedWalkMaxSamplesPerTriangle));
 }
 
 template <typename Real>

@@ -97,6 +97,13 @@ void fill_bins(const Scene& scene, const RenderOptions& options, const FillPlan<
 /// 1.3-3.9 samples per drawn triangle, 0.99-1.40 at 20-226.
 constexpr double kWalkMaxSamplesPerTriangle = 8.0;
 
+/// Lit seed Gouraud, which fills tiny triangles too but lights their corners
+/// in batches, walks at two threads or more only on triangles this small:
+/// walks over the mesh's halves / sorted at 2 threads (`--walk-against-sorted
+/// --walk always`, b9c4968): 1.3M [1.3 samples per drawn triangle] 0.76, 8M
+/// 0.78, armadillo 0.98, bunny [3.9] 0.96, 125k [3.2] 1.02-1.09.
+constexpr double kSeedWalkMaxSamplesPerTriangle = 2.0;
+
 /// The mean area in samples of a sample of up to 4,096 of the mesh's
 /// triangles (every size()/4096-th) that lie at least partly on the image,
 /// each counted at most as the image's area; 0 when none does.
@@ -107,8 +114,8 @@ double sampled_samples_per_triangle(const std::vector<Triangle>& triangles, cons
 /// output names the last triangle, its triangles are small (mean area
 /// `samples_per_triangle`, at most kWalkMaxSamplesPerTriangle), and it is
 /// ambient only, fills tiny triangles from the coverage screen (flat, exact
-/// Gouraud: FillPlan::tiny_kernel; not the seed's Gouraud, measured no faster
-/// so) or fills in one walk (one thread).
+/// Gouraud: FillPlan::tiny_kernel; the seed's Gouraud only on triangles of
+/// at most kSeedWalkMaxSamplesPerTriangle) or fills in one walk (one thread).
 template <typename Real>
 bool fills_in_mesh_order(const FillPlan<Real>& plan, bool extra_outputs, double samples_per_triangle);
 

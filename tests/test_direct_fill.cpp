@@ -482,7 +482,7 @@ TEST_CASE("Phong lit per sample, extra outputs and the depth buffer do not fill 
     CHECK(detail::passes_filled_in_mesh_order() == before);
 }
 
-TEST_CASE("the fill in mesh order is taken for small triangles, lit seed Gouraud on one thread") {
+TEST_CASE("the fill in mesh order is taken for small triangles, lit seed Gouraud on one thread or tiny ones") {
     for (const RenderOptions& mode : {RenderOptions::exact(), RenderOptions::seed()}) {
         for (Shader shader : {Shader::flat, Shader::gouraud}) {
             for (Lighting lighting : {Lighting::only_ambient(), Lighting::full()}) {
@@ -512,6 +512,14 @@ TEST_CASE("the fill in mesh order is taken for small triangles, lit seed Gouraud
                 render(small, options);
                 const bool walks = !lit || shader == Shader::flat || !seed;
                 CHECK(detail::passes_filled_in_mesh_order() == before + (walks ? 1 : 0));
+                // Lit seed Gouraud too where its triangles are tinier still (at most
+                // kSeedWalkMaxSamplesPerTriangle samples): the sphere on a third of the rows and columns.
+                Scene tinier = small;
+                tinier.image.rows /= 3;
+                tinier.image.columns /= 3;
+                before = detail::passes_filled_in_mesh_order();
+                render(tinier, options);
+                CHECK(detail::passes_filled_in_mesh_order() == before + 1);
             }
         }
     }
