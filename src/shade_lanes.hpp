@@ -55,11 +55,26 @@ template <typename Real, std::size_t N, typename PointOf>
 void light_vectors_lanes(const PointShader<Real>& shader, const PointOf& point_of, AxisLanes<Real, N>* vectors) {
     const std::vector<CameraLight<Real>>& lights = shader.rig->active_lights;
     const bool eye_at_point = shader.effects.specular && !shader.rig->eye_at_infinity;
-    for (std::size_t k = 0; k < lights.size() + (eye_at_point ? 1 : 0); ++k) {
-        for (std::size_t l = 0; l < N; ++l) {
-            // compute()'s differences: light - point, and -point for the eye at the origin.
-            const Vec3<Real>& point = point_of(l);
-            vectors[k].set(l, k < lights.size() ? lights[k].position - point : -point);
+    // The points gathered into lanes once, not once per light: the differences
+    // below then vectorise (a gather per light was most of the vertex lighting's loads).
+    const std::size_t differences = lights.size() + (eye_at_point ? 1 : 0);
+    Real point[3][N];
+    for (std::size_t l = 0; l < N && differences > 0; ++l) {
+        const Vec3<Real>& p = point_of(l);
+        for (int c = 0; c < 3; ++c) point[c][l] = p[c];
+    }
+    for (std::size_t k = 0; k < differences; ++k) {
+        // compute()'s differences: light - point, and -point for the eye at the origin.
+        Real(&to)[3][N] = vectors[k].axis;
+        if (k < lights.size()) {
+            for (int c = 0; c < 3; ++c) {
+                const Real light = lights[k].position[c];
+                for (std::size_t l = 0; l < N; ++l) to[c][l] = light - point[c][l];
+            }
+        } else {
+            for (int c = 0; c < 3; ++c) {
+                for (std::size_t l = 0; l < N; ++l) to[c][l] = -point[c][l];
+            }
         }
         safe_normalize_lanes(N, vectors[k].axis[0], vectors[k].axis[1], vectors[k].axis[2]);
     }
