@@ -322,15 +322,16 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
     resize_polling(image.pixels, samples, progress.poll_function(), !mapped);
     const bool ranked = !plan.order_free;
     const std::size_t chunks = (scene.mesh.triangles.size() + kSetupChunk - 1) / kSetupChunk;
-    // One walk per thread. Ranked, two or more walks take the mesh in two
-    // halves, each walk over its half's triangles that reach its rows (rows
-    // in parts as the walks pair up), the second half's ranks and colours
-    // apart, merged into the image after (merge_later_half()): each walk
-    // screens and reads only its own triangles, where walks over rows alone
-    // each screen all of them.
+    // One walk per thread. Ranked, an even number of walks take the mesh in
+    // two halves, each walk over its half's triangles that reach its rows
+    // (rows in parts as the walks pair up), the second half's ranks and
+    // colours apart, merged into the image after (merge_later_half()): each
+    // walk screens and reads only its own triangles, where walks over rows
+    // alone each screen all of them. (An odd number keeps rows alone, every
+    // thread busy: measured only at two.)
     const int forced_walks = mesh_order_fill_walks.load(std::memory_order_relaxed);
     const int threads = forced_walks > 0 ? forced_walks : tbb::this_task_arena::max_concurrency();
-    const std::size_t halves = ranked && threads >= 2 && chunks >= 2 ? 2 : 1;
+    const std::size_t halves = ranked && threads % 2 == 0 && chunks >= 2 ? 2 : 1;
     const std::size_t first_half_chunks = (chunks + 1) / 2;
     RowSplit& split = draws.direct_split;
     split_rows_by_triangles(scene.mesh.triangles, setup.vertices.screen, rows,
@@ -341,10 +342,10 @@ void fill_in_mesh_order(const Scene& scene, const RenderOptions& options, const 
         // Key 0 is no triangle's (farthest_first_key() gives it to a NaN
         // only): "no colour yet", so the ties need no clearing. Each walk
         // clears its rows' keys; the buffers are only mapped here.
-        // The walk takes the triangles in mesh order, i.e. in the order of
-        // their ties, unless the mesh is a reordered copy (mesh_order.hpp).
         reserve_populated(memory.rank_keys, samples);
         memory.rank_keys.resize(samples);
+        // The walk takes the triangles in mesh order, i.e. in the order of
+        // their ties, unless the mesh is a reordered copy (mesh_order.hpp).
         if (original_triangle != nullptr && memory.rank_ties.size() < samples) memory.rank_ties.resize(samples);
         if (halves == 2) {
             reserve_populated(memory.later_rank_keys, samples);

@@ -1,8 +1,8 @@
 // The fill in mesh order (fill_in_mesh_order(), fill_driver.hpp): an
 // ambient-only render sets up and fills each triangle in a walk of the mesh
 // (one per thread, each over its own rows), keeping painter's order by a
-// rank test per sample instead of a sort; with two walks or more, the mesh
-// in two halves whose ranks and colours are merged after. It must paint painter's picture
+// rank test per sample instead of a sort; with an even number of walks, the
+// mesh in two halves whose ranks and colours are merged after. It must paint painter's picture
 // bit for bit, with the same counts, whatever the shader, mode, precision,
 // colours, materials, ties of equal depth, clipping, supersampling, mesh
 // order, threads or walks; and it must be the path an ambient-only render takes.
@@ -400,7 +400,7 @@ TEST_CASE("the fill in mesh order breaks a reordered mesh's ties in the caller's
 TEST_CASE("the mesh's two halves merge as one walk: ties across the halves in the caller's order") {
     // Two overlapping grids in one plane facing the camera (every triangle's
     // mean depth equal: ties decide every sample), 6,400 triangles (two
-    // chunks: two walks or more take the mesh in halves), shuffled. A
+    // chunks: an even number of walks take the mesh in halves), shuffled. A
     // Renderer reorders it (ties from the caller's order, not the walk's),
     // render() does not (ties in mesh order).
     const std::size_t previous_min = detail::set_reorder_min_triangles(0);
