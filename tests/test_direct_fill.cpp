@@ -2,8 +2,8 @@
 // ambient-only render sets up and fills each triangle in a walk of the mesh
 // (one per thread, each over its own rows), keeping painter's order by a
 // rank test per sample instead of a sort; with an even number of walks, the
-// mesh in two halves whose ranks and colours are merged after. It must paint painter's picture
-// bit for bit, with the same counts, whatever the shader, mode, precision,
+// mesh in two halves whose ranks and colours are merged after. It must paint
+// painter's picture bit for bit, with the same counts, whatever the shader, mode, precision,
 // colours, materials, ties of equal depth, clipping, supersampling, mesh
 // order, threads or walks; and it must be the path an ambient-only render takes.
 #include <algorithm>
