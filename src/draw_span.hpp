@@ -9,8 +9,11 @@
 
 namespace phongrast::detail {
 
-/// Mesh triangles set up by one task (one chunk of the draw list).
+/// Mesh triangles set up by one task (one chunk of the draw list), and the
+/// fewest a task takes when a small mesh's chunks are made smaller so that
+/// every thread gets several (items_per_task()).
 constexpr std::size_t kSetupChunk = 4096;
+constexpr std::size_t kSmallestSetupChunk = 512;
 
 /// Where the draws (FillTriangles) of a mesh triangle that set-up drew are,
 /// as painter's order and binning see it: 8 bytes, so that the sort moves

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "back_faces.hpp"
 #include "clipping.hpp"
@@ -14,6 +15,7 @@
 #include "prefetch.hpp"
 #include "raster.hpp"
 #include "seed_corner_batch.hpp"
+#include "task_sizes.hpp"
 #include "term_counts.hpp"
 
 namespace phongrast::detail {
@@ -600,7 +602,11 @@ template <typename Real>
 void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, RenderStats& stats,
                       ProgressMonitor& progress) {
     const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
-    const std::size_t chunks = (triangles.size() + kSetupChunk - 1) / kSetupChunk;
+    // Smaller chunks only for a mesh of fewer than kTasksPerThread x kSetupChunk triangles per thread:
+    // at most 8 chunks per thread then, so a chunk's number fits DrawSpan for any arena.
+    const std::size_t chunk_triangles = items_per_task(
+        triangles.size(), tbb::this_task_arena::max_concurrency(), kSetupChunk, kSmallestSetupChunk);
+    const std::size_t chunks = (triangles.size() + chunk_triangles - 1) / chunk_triangles;
     if (draws.chunk_draws.size() < chunks) make_chunk_vectors(draws, chunks);
     if (draws.chunk_clip_vertices.size() < chunks) draws.chunk_clip_vertices.resize(chunks);
     if (draws.chunk_vectors.size() < chunks) draws.chunk_vectors.resize(chunks);
@@ -613,8 +619,8 @@ void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, Rend
     progress.begin_stage(0.1, 0.35, chunks);
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
         if (progress.cancelled()) return;
-        const std::size_t begin = chunk * kSetupChunk;
-        const std::size_t end = std::min(triangles.size(), begin + kSetupChunk);
+        const std::size_t begin = chunk * chunk_triangles;
+        const std::size_t end = std::min(triangles.size(), begin + chunk_triangles);
         // The chunk's vectors and counts are moved here for the loop and back
         // after it: in the list, two chunks' vector headers and counts share
         // cache lines, and each triangle writes them (a vector's end, a

@@ -81,9 +81,10 @@ struct alignas(64) DirectScratch {
 };
 
 /// Set-up's output, in mesh order: chunk after chunk of kSetupChunk mesh
-/// triangles, each chunk's draws in mesh order, and for each triangle that
-/// draws something its painter's-order key and where its draws are.
-/// Fixed-size chunks make the list the same whatever the number of threads.
+/// triangles (fewer for a small mesh on several threads: set_up_triangles()),
+/// each chunk's draws in mesh order, and for each triangle that draws
+/// something its painter's-order key and where its draws are. Where the
+/// chunks start changes no draw, key or count, nor their order.
 /// Kept from frame to frame. A small frame's chunk vectors live in `arena`
 /// (chunk_arena.hpp: huge pages), a large frame's on the heap.
 template <typename Real>

@@ -6,6 +6,7 @@
 #include "prefetch.hpp"
 #include "resize_polling.hpp"
 #include "shade_lanes.hpp"
+#include "task_sizes.hpp"
 #include "vertex_lighting_lanes.hpp"
 
 #include <algorithm>
@@ -14,12 +15,17 @@
 #include <limits>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace phongrast::detail {
 namespace {
 
-/// Vertices transformed by one task.
+/// Vertices transformed by one task, and the fewest a task takes when a
+/// small mesh's blocks are made smaller so that every thread gets several
+/// (items_per_task(); powers of two, so whole batches of kGatherLanes and
+/// kTransformLanes).
 constexpr std::size_t kTransformBlock = 4096;
+constexpr std::size_t kSmallestTransformBlock = 512;
 /// Vertices lit by one task (Gouraud with exact light vectors).
 constexpr std::size_t kLightingBlock = 1024;
 
@@ -197,13 +203,15 @@ void transform_vertices(const Mesh& mesh, const CallerVertices& caller, const Vi
                                                                  : &arrays.normals;
     resize_polling(out.screen, count, progress.poll_function());
     resize_polling(out.varyings, count, progress.poll_function());
-    progress.begin_stage(0.05, 0.1, (count + kTransformBlock - 1) / kTransformBlock);
-    const std::size_t blocks = (count + kTransformBlock - 1) / kTransformBlock;
+    const std::size_t block_size =
+        items_per_task(count, tbb::this_task_arena::max_concurrency(), kTransformBlock, kSmallestTransformBlock);
+    const std::size_t blocks = (count + block_size - 1) / block_size;
+    progress.begin_stage(0.05, 0.1, blocks);
     // The lighting's scratch per block, not per thread (see light_vertices()).
     if (lit_shader != nullptr && memory.block_vectors.size() < blocks) memory.block_vectors.resize(blocks);
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t block) {
         if (progress.cancelled()) return;
-        const std::size_t first = block * kTransformBlock, end = std::min(count, first + kTransformBlock);
+        const std::size_t first = block * block_size, end = std::min(count, first + block_size);
         if (gathered) {
             transform_gathered(arrays, caller.source, normals, first, end, view, unlit_shader, out);
         } else {
