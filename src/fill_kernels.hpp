@@ -113,23 +113,37 @@ private:
 };
 
 /// for_each_weighted_span() for a triangle that is not tiny: row by row, each
-/// span solved from the edge functions. Kept out of line, so that the tiny
-/// triangles' path keeps its values in registers.
+/// span solved from the edge functions (by masks, the rows' values carried
+/// from row to row: in-process A/B, 1 thread, 512²: Gouraud 0.95-0.97, flat
+/// 0.92, Phong 0.98-1.00; 125k 0.97-0.98). Kept out of line, so that the
+/// tiny triangles' path keeps its values in registers.
 template <typename Real, bool Perspective, typename Visit>
 PHONGRAST_NOINLINE void for_each_weighted_row(const CoveredRows& rows, const FillTriangle<Real>& draw,
                                               Visit& visit) {
     SpanWeights<Real, Perspective> weights;
     bool weights_set_up = false;
     Real q[3];
-    for (int row = rows.first_row(); row <= rows.last_row(); ++row) {
-        CoveredSpan span;
-        if (!rows.solve(row, span)) continue;
+    const auto visit_span = [&](const CoveredSpan& span) PHONGRAST_INLINE_LAMBDA {
         if (!weights_set_up) {
             weights.set_up(draw, rows.step());
             weights_set_up = true;
         }
         weights.at(span.e, q);
         visit(span.row, span.first_column, span.count, q, weights.step());
+    };
+#if PHONGRAST_ROW_MASKS
+    if (rows.solves_rows_by_masks()) {
+        CoveredRows::MaskedRows masked(rows);
+        for (int row = rows.first_row(); row <= rows.last_row(); ++row) {
+            CoveredSpan span;
+            if (masked.solve_and_advance(row, span)) visit_span(span);
+        }
+        return;
+    }
+#endif
+    for (int row = rows.first_row(); row <= rows.last_row(); ++row) {
+        CoveredSpan span;
+        if (rows.solve(row, span)) visit_span(span);
     }
 }
 

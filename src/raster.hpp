@@ -290,6 +290,48 @@ public:
         return true;
     }
 
+#if PHONGRAST_ROW_MASKS
+    /// solve() for rows first_row(), first_row() + 1, ... in turn, when
+    /// solves_rows_by_masks(): the rows' edge values carried from row to row
+    /// (64-bit values and the masks' 32-bit lanes, which set_up_masks() found
+    /// to hold every value of the box exactly) instead of computed from the
+    /// first row by a multiplication per edge. The same spans as solve().
+    class MaskedRows {
+    public:
+        PHONGRAST_ALWAYS_INLINE explicit MaskedRows(const CoveredRows& rows) : rows_(rows) {
+            for (int i = 0; i < 3; ++i) {
+                value_[i] = rows.biased_[i];
+                lanes_[i] = _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value_[i])), rows.lane_offset_[i]);
+                lanes_row_step_[i] = _mm_set1_epi32(static_cast<std::int32_t>(rows.step_row_[i]));
+            }
+        }
+        /// The current row's span as solve(row, span) finds it (false: none), then moves to the next row.
+        PHONGRAST_ALWAYS_INLINE bool solve_and_advance(int row, CoveredSpan& span) {
+            const std::uint32_t covered = rows_.covered_columns_from(lanes_);
+            const std::int64_t value0 = value_[0], value1 = value_[1], value2 = value_[2];
+            for (int i = 0; i < 3; ++i) {
+                value_[i] += rows_.step_row_[i];
+                lanes_[i] = _mm_add_epi32(lanes_[i], lanes_row_step_[i]);
+            }
+            if (covered == 0) return false;
+            const std::int64_t k_lo = __builtin_ctz(covered), k_hi = 31 - __builtin_clz(covered);
+            span.row = row;
+            span.first_column = rows_.column_min_ + static_cast<int>(k_lo);
+            span.count = static_cast<int>(k_hi - k_lo + 1);
+            span.e[0] = value0 + rows_.step_column_[0] * k_lo + rows_.threshold_[0];
+            span.e[1] = value1 + rows_.step_column_[1] * k_lo + rows_.threshold_[1];
+            span.e[2] = value2 + rows_.step_column_[2] * k_lo + rows_.threshold_[2];
+            return true;
+        }
+
+    private:
+        const CoveredRows& rows_;
+        std::int64_t value_[3];
+        __m128i lanes_[3];           ///< the row's values at the box's columns 0-3
+        __m128i lanes_row_step_[3];  ///< their change per row
+    };
+#endif
+
     /// tiny() only: tests the (at most four) centres of the bounding box
     /// directly, without solving rows. Writes the covered spans, in row
     /// order, to spans[0..1] and returns their number: exactly what solve()
@@ -349,9 +391,16 @@ private:
     /// their OR clear. No branch per column, so the span's ends cost no
     /// mispredicted branch as a walk's do.
     PHONGRAST_ALWAYS_INLINE std::uint32_t covered_columns(const std::int64_t* value) const {
-        __m128i e0 = _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value[0])), lane_offset_[0]);
-        __m128i e1 = _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value[1])), lane_offset_[1]);
-        __m128i e2 = _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value[2])), lane_offset_[2]);
+        const __m128i lanes[3] = {
+            _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value[0])), lane_offset_[0]),
+            _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value[1])), lane_offset_[1]),
+            _mm_add_epi32(_mm_set1_epi32(static_cast<std::int32_t>(value[2])), lane_offset_[2])};
+        return covered_columns_from(lanes);
+    }
+
+    /// covered_columns() from the row's values at the box's columns 0-3.
+    PHONGRAST_ALWAYS_INLINE std::uint32_t covered_columns_from(const __m128i* lanes) const {
+        __m128i e0 = lanes[0], e1 = lanes[1], e2 = lanes[2];
         std::uint32_t outside = 0;
         for (int group = 0; group < mask_groups_; ++group) {
             const __m128i any = _mm_or_si128(_mm_or_si128(e0, e1), e2);

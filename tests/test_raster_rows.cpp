@@ -1,8 +1,9 @@
 // CoveredRows::solve() for triangles larger than tiny: every way it finds a
 // row's span (a mask of the row's centres for boxes under 32 columns whose
 // edge values fit 32 bits, a walk along narrow rows, a bound per edge on
-// wide ones) against every centre tested on its own from scratch: the same
-// spans and edge values, at any position, in any band of rows.
+// wide ones; the masks also row after row, as the fill walks them) against
+// every centre tested on its own from scratch: the same spans and edge
+// values, at any position, in any band of rows.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -79,6 +80,10 @@ TEST_CASE("rows of larger triangles: masks, walks and bounds find every centre t
             }
             const std::vector<CoveredSpan> solved = solved_spans(rows);
             REQUIRE(same_spans(solved, brute_force_spans(t, rows.first_row(), rows.last_row())));
+#if PHONGRAST_ROW_MASKS
+            // The fill's walk of the rows by masks, values carried from row to row: the same spans.
+            if (rows.solves_rows_by_masks()) REQUIRE(same_spans(masked_spans(rows), solved));
+#endif
             spans_compared += static_cast<int>(solved.size());
         }
     }
@@ -107,6 +112,9 @@ TEST_CASE("rows by masks: a tall box of one group of columns, whose column step 
         const std::vector<CoveredSpan> solved = solved_spans(band);
         REQUIRE(solved.size() == 16);
         REQUIRE(same_spans(solved, brute_force_spans(t, band.first_row(), band.last_row())));
+#if PHONGRAST_ROW_MASKS
+        REQUIRE(same_spans(masked_spans(band), solved));
+#endif
     }
     CHECK(4 * largest_step > std::int64_t(INT32_MAX));
     CHECK(3 * largest_step <= std::int64_t(INT32_MAX));

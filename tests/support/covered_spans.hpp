@@ -64,6 +64,19 @@ inline std::vector<CoveredSpan> solved_spans(const CoveredRows& rows) {
     return spans;
 }
 
+#if PHONGRAST_ROW_MASKS
+/// The spans CoveredRows::MaskedRows finds row after row (solves_rows_by_masks() only).
+inline std::vector<CoveredSpan> masked_spans(const CoveredRows& rows) {
+    std::vector<CoveredSpan> spans;
+    CoveredRows::MaskedRows masked(rows);
+    for (int row = rows.first_row(); row <= rows.last_row(); ++row) {
+        CoveredSpan span;
+        if (masked.solve_and_advance(row, span)) spans.push_back(span);
+    }
+    return spans;
+}
+#endif
+
 }  // namespace phongrast::detail
 
 #endif  // PHONGRAST_TESTS_SUPPORT_COVERED_SPANS_HPP
