@@ -1,6 +1,7 @@
 #include "triangle_setup.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -602,11 +603,12 @@ template <typename Real>
 void set_up_triangles(const SetupInput<Real>& input, DrawList<Real>& draws, RenderStats& stats,
                       ProgressMonitor& progress) {
     const std::vector<Triangle>& triangles = input.scene.mesh.triangles;
-    // Smaller chunks only for a mesh of fewer than kTasksPerThread x kSetupChunk triangles per thread:
-    // at most 8 chunks per thread then, so a chunk's number fits DrawSpan for any arena.
+    // Smaller chunks only for a mesh of fewer than kTasksPerThread x kSetupChunk triangles per thread,
+    // about kTasksPerThread chunks per thread then: a chunk's number fits DrawSpan's 17 bits.
     const std::size_t chunk_triangles = items_per_task(
         triangles.size(), tbb::this_task_arena::max_concurrency(), kSetupChunk, kSmallestSetupChunk);
     const std::size_t chunks = (triangles.size() + chunk_triangles - 1) / chunk_triangles;
+    assert(chunks <= (std::size_t(1) << (32 - DrawSpan::kFirstBits)));
     if (draws.chunk_draws.size() < chunks) make_chunk_vectors(draws, chunks);
     if (draws.chunk_clip_vertices.size() < chunks) draws.chunk_clip_vertices.resize(chunks);
     if (draws.chunk_vectors.size() < chunks) draws.chunk_vectors.resize(chunks);
