@@ -283,10 +283,7 @@ public:
             }
             if (k_lo > k_hi) return false;
         }
-        span.row = row;
-        span.first_column = column_min_ + static_cast<int>(k_lo);
-        span.count = static_cast<int>(k_hi - k_lo + 1);
-        for (int i = 0; i < 3; ++i) span.e[i] = value[i] + step_column_[i] * k_lo + threshold_[i];
+        write_span(row, k_lo, k_hi, value, span);
         return true;
     }
 
@@ -308,19 +305,13 @@ public:
         /// The current row's span as solve(row, span) finds it (false: none), then moves to the next row.
         PHONGRAST_ALWAYS_INLINE bool solve_and_advance(int row, CoveredSpan& span) {
             const std::uint32_t covered = rows_.covered_columns_from(lanes_);
-            const std::int64_t value0 = value_[0], value1 = value_[1], value2 = value_[2];
+            const std::int64_t value[3] = {value_[0], value_[1], value_[2]};
             for (int i = 0; i < 3; ++i) {
                 value_[i] += rows_.step_row_[i];
                 lanes_[i] = _mm_add_epi32(lanes_[i], lanes_row_step_[i]);
             }
             if (covered == 0) return false;
-            const std::int64_t k_lo = __builtin_ctz(covered), k_hi = 31 - __builtin_clz(covered);
-            span.row = row;
-            span.first_column = rows_.column_min_ + static_cast<int>(k_lo);
-            span.count = static_cast<int>(k_hi - k_lo + 1);
-            span.e[0] = value0 + rows_.step_column_[0] * k_lo + rows_.threshold_[0];
-            span.e[1] = value1 + rows_.step_column_[1] * k_lo + rows_.threshold_[1];
-            span.e[2] = value2 + rows_.step_column_[2] * k_lo + rows_.threshold_[2];
+            rows_.write_span(row, __builtin_ctz(covered), 31 - __builtin_clz(covered), value, span);
             return true;
         }
 
@@ -348,6 +339,15 @@ public:
     }
 
 private:
+    /// A row's span of covered columns k_lo..k_hi of the box, the row's biased values at its first column `value`.
+    PHONGRAST_ALWAYS_INLINE void write_span(int row, std::int64_t k_lo, std::int64_t k_hi, const std::int64_t* value,
+                                            CoveredSpan& span) const {
+        span.row = row;
+        span.first_column = column_min_ + static_cast<int>(k_lo);
+        span.count = static_cast<int>(k_hi - k_lo + 1);
+        for (int i = 0; i < 3; ++i) span.e[i] = value[i] + step_column_[i] * k_lo + threshold_[i];
+    }
+
     PHONGRAST_ALWAYS_INLINE void set_up_edge(int i, const SnappedPoint& a, const SnappedPoint& b,
                                              std::int64_t origin_x, std::int64_t origin_y) {
         const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
