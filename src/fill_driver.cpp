@@ -264,8 +264,7 @@ int set_mesh_order_walks(int walks) { return mesh_order_fill_walks.exchange(walk
 
 double sampled_samples_per_triangle(const std::vector<Triangle>& triangles, const FrameVector<ScreenVertex>& screen,
                                     int rows, int columns) {
-    constexpr std::size_t kSample = 4096;
-    const std::size_t step = std::max<std::size_t>(1, triangles.size() / kSample);
+    const std::size_t step = std::max<std::size_t>(1, triangles.size() / kTrianglesSampledForSize);
     const double image_area = double(rows) * double(columns);
     double area_sum = 0.0;
     std::size_t counted = 0;

@@ -556,6 +556,29 @@ TEST_CASE("the triangles' sampled mean area counts those on the image, each at m
     CHECK(detail::sampled_samples_per_triangle({}, screen, 50, 100) == 0.0);
 }
 
+TEST_CASE("the triangles' mean area is sampled from every size() / kTrianglesSampledForSize-th triangle") {
+    // Triangles of area 2 at multiples of 3 (the sample's stride below), 8 elsewhere: the sample sees only the 2s.
+    detail::FrameVector<detail::ScreenVertex> screen;
+    for (glm::dvec2 p : {glm::dvec2{10, 10}, glm::dvec2{12, 10}, glm::dvec2{10, 12}, glm::dvec2{20, 20},
+                         glm::dvec2{20, 24}, glm::dvec2{24, 20}}) {
+        screen.push_back({p.x, p.y, 1.0});
+    }
+    constexpr std::size_t kStride = 3;
+    std::vector<Triangle> triangles;
+    for (std::size_t t = 0; t < kStride * detail::kTrianglesSampledForSize; ++t) {
+        triangles.push_back(t % kStride == 0 ? Triangle{0, 1, 2} : Triangle{3, 4, 5});
+    }
+    CHECK(detail::sampled_samples_per_triangle(triangles, screen, 50, 100) == Approx(2.0));
+    // One triangle fewer: a stride of 2, which meets the 8s too (a third of the even triangles are 2s).
+    triangles.pop_back();
+    CHECK(detail::sampled_samples_per_triangle(triangles, screen, 50, 100) > 2.5);
+    // Under kTrianglesSampledForSize triangles, each is read: the exact mean.
+    triangles.resize(detail::kTrianglesSampledForSize - 1);
+    const double twos = double((triangles.size() + kStride - 1) / kStride);
+    CHECK(detail::sampled_samples_per_triangle(triangles, screen, 50, 100) ==
+          Approx((2.0 * twos + 8.0 * (double(triangles.size()) - twos)) / double(triangles.size())));
+}
+
 TEST_CASE("the rows are split into parts of at least one row each, in order, whatever the triangles") {
     // Triangles anywhere: on the image, off it, behind the eye (NaN rows), huge.
     std::mt19937 random(11);
