@@ -21,6 +21,26 @@ void* volatile grown = nullptr;
 
 }  // namespace
 
+void* hold_up_to_huge_page(std::uintptr_t top, std::uintptr_t first, std::uintptr_t last,
+                           void* (*allocate)(std::size_t), void (*release)(void*)) {
+    constexpr std::size_t kHugePage = std::size_t(2) << 20;
+    constexpr std::size_t kHeader = 2 * sizeof(std::size_t);
+    // malloc serves a request from a free chunk elsewhere in the heap, if one
+    // fits, before its top: a hold of a few KiB could land there and leave
+    // the top, and the next buffer, below the boundary (test_process_heap
+    // failed 1 run in 50-400 so, the hold placed elsewhere in exactly the
+    // failing run). Then hold up to the next boundary instead, a request
+    // larger than any free chunk of a young heap.
+    for (std::uintptr_t boundary = first; boundary + kHugePage <= last; boundary += kHugePage) {
+        if (boundary - top <= 4 * kHeader) continue;  // too close to hold: the next boundary
+        void* const hold = allocate(boundary - top - kHeader);
+        if (hold == nullptr) return nullptr;
+        if (reinterpret_cast<std::uintptr_t>(hold) == top) return hold;
+        release(hold);
+    }
+    return nullptr;
+}
+
 void prepare_one_off_heap() {
 #if defined(__GLIBC__) && defined(MADV_HUGEPAGE)
     constexpr std::size_t kMiB = std::size_t(1) << 20;
@@ -57,23 +77,10 @@ void prepare_one_off_heap() {
     // malloc hands out the free top from its start: hold the part below the
     // first 2 MiB boundary (never touched beyond its header; it is the
     // process's, freed at exit), so that the buffers start on huge pages.
-    // malloc serves a request from a free chunk elsewhere in the heap, if one
-    // fits, before its top: a hold of a few KiB could land there and leave
-    // the top, and the next buffer, below the boundary (test_process_heap
-    // failed 1 run in 50-400 so, the hold placed elsewhere in exactly the
-    // failing run). Then hold up to the next boundary instead, a request
-    // larger than any free chunk of a young heap.
-    constexpr std::size_t kHeader = 2 * sizeof(std::size_t);
-    if (held_below_huge_pages != nullptr) return;
-    for (std::uintptr_t boundary = first; boundary + kHugePage <= last; boundary += kHugePage) {
-        if (boundary - begin <= 4 * kHeader) continue;
-        void* const hold = std::malloc(boundary - begin - kHeader);
-        if (hold == nullptr) return;
-        if (reinterpret_cast<std::uintptr_t>(hold) == begin) {
-            held_below_huge_pages = hold;
-            return;
-        }
-        std::free(hold);
+    const auto allocate = [](std::size_t bytes) { return std::malloc(bytes); };
+    const auto release = [](void* hold) { std::free(hold); };
+    if (held_below_huge_pages == nullptr) {
+        held_below_huge_pages = hold_up_to_huge_page(begin, first, last, allocate, release);
     }
 #endif
 }

@@ -2,6 +2,9 @@
 #ifndef PHONGRAST_APPS_PROCESS_HEAP_HPP
 #define PHONGRAST_APPS_PROCESS_HEAP_HPP
 
+#include <cstddef>
+#include <cstdint>
+
 namespace phongrast::cli {
 
 /// Sets glibc's malloc up for a short process that reads a mesh, renders
@@ -15,6 +18,16 @@ namespace phongrast::cli {
 /// (a library must not change its host's malloc). Does nothing where
 /// glibc's mallopt or MADV_HUGEPAGE is missing; the pictures do not change.
 void prepare_one_off_heap();
+
+/// prepare_one_off_heap()'s hold: a block from allocate() starting at `top`
+/// (the heap's free top, 2 MiB boundaries `first` to `last` above it) and
+/// ending just below the first boundary more than a header above `top`, or
+/// below the next one whenever allocate() places a hold elsewhere (a free
+/// chunk it fits), which is then given to release(). Null if none could be
+/// placed at `top`. Apart for its test: allocate and release stand for
+/// malloc and free.
+void* hold_up_to_huge_page(std::uintptr_t top, std::uintptr_t first, std::uintptr_t last,
+                           void* (*allocate)(std::size_t), void (*release)(void*));
 
 }  // namespace phongrast::cli
 

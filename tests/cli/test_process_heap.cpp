@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "process_heap.hpp"
 
@@ -96,4 +97,56 @@ TEST_CASE("prepare_one_off_heap: MiB buffers on the heap's huge pages, large one
     std::free(large);
     std::free(buffer);
 #endif
+}
+
+namespace {
+
+// A stand-in for malloc and free: hands out the addresses queued in `placements`, in turn, and records the sizes
+// asked for and the blocks given back.
+std::vector<std::uintptr_t> placements;
+std::vector<std::size_t> sizes_asked;
+std::vector<void*> released;
+void* fake_allocate(std::size_t bytes) {
+    sizes_asked.push_back(bytes);
+    if (sizes_asked.size() > placements.size()) return nullptr;
+    return reinterpret_cast<void*>(placements[sizes_asked.size() - 1]);
+}
+void fake_release(void* block) { released.push_back(block); }
+
+}  // namespace
+
+TEST_CASE("the one-off heap's hold comes from the heap's top, up to the next 2 MiB boundary if placed elsewhere") {
+    constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
+    constexpr std::uintptr_t kHeader = 2 * sizeof(std::size_t);
+    constexpr std::uintptr_t first = 64 * kHugePage, last = first + 14 * kHugePage, top = first - 4256;
+    constexpr std::uintptr_t elsewhere = 3 * kHugePage + 4096;
+    placements.clear();
+    sizes_asked.clear();
+    released.clear();
+    SECTION("placed at the top: held up to the first boundary") {
+        placements = {top};
+        CHECK(phongrast::cli::hold_up_to_huge_page(top, first, last, fake_allocate, fake_release) ==
+              reinterpret_cast<void*>(top));
+        CHECK(sizes_asked == std::vector<std::size_t>{first - top - kHeader});
+        CHECK(released.empty());
+    }
+    SECTION("placed elsewhere (a free chunk it fits): given back, then held up to the next boundary") {
+        placements = {elsewhere, top};
+        CHECK(phongrast::cli::hold_up_to_huge_page(top, first, last, fake_allocate, fake_release) ==
+              reinterpret_cast<void*>(top));
+        CHECK(sizes_asked == std::vector<std::size_t>{first - top - kHeader, first + kHugePage - top - kHeader});
+        CHECK(released == std::vector<void*>{reinterpret_cast<void*>(elsewhere)});
+    }
+    SECTION("the first boundary within a header of the top: held up to the next one") {
+        placements = {first - kHeader};
+        CHECK(phongrast::cli::hold_up_to_huge_page(first - kHeader, first, last, fake_allocate, fake_release) ==
+              reinterpret_cast<void*>(first - kHeader));
+        CHECK(sizes_asked == std::vector<std::size_t>{kHugePage});
+    }
+    SECTION("never placed at the top, or no memory: nothing held, every misplaced hold given back") {
+        placements = {elsewhere, elsewhere + kHugePage};  // then null
+        CHECK(phongrast::cli::hold_up_to_huge_page(top, first, last, fake_allocate, fake_release) == nullptr);
+        CHECK(sizes_asked.size() == 3);
+        CHECK(released.size() == 2);
+    }
 }
