@@ -105,18 +105,17 @@ constexpr double kWalkMaxSamplesPerTriangle = 8.0;
 /// 0.78, armadillo 0.98, bunny [3.9] 0.96, 125k [3.2] 1.02-1.09.
 constexpr double kSeedWalkMaxSamplesPerTriangle = 2.0;
 
-/// How many triangles sampled_samples_per_triangle() looks at, at most about.
-/// The sample is taken on one thread before anything else can start, so it
-/// is kept small: 4,096 cost spot and the teapot (5.8k and 6.3k triangles,
-/// all of them read) 0.03-0.05 ms of their 1.6-2.3 ms 512² frames; 1,024
-/// cost 0.01 (in-process A/B, Gouraud: frames 0.98-0.99 at 1 and 2 threads;
-/// the same choice of walk in 96 cases: 8 speed scenes x 3 shaders x ambient
-/// or full x exact or seed).
+/// sampled_samples_per_triangle() reads every size()/kTrianglesSampledForSize-th
+/// triangle: 1,024 to 2,047 of them, or all of a smaller mesh. It runs on one
+/// thread before anything else can start, so the sample is kept small: 4,096
+/// cost spot and the teapot (5.8k and 6.3k triangles, all of them read)
+/// 0.03-0.05 ms of their 1.6-2.3 ms 512² frames; 1,024 cost 0.01 (in-process
+/// A/B, Gouraud: frames 0.98-0.99 at 1 and 2 threads; the same choice of walk
+/// in 96 cases: 8 speed scenes x 3 shaders x ambient or full x exact or seed).
 constexpr std::size_t kTrianglesSampledForSize = 1024;
 
-/// The mean area in samples of a sample of about kTrianglesSampledForSize of
-/// the mesh's triangles (every size()/kTrianglesSampledForSize-th) that lie
-/// at least partly on the image, each counted at most as the image's area; 0
+/// The mean area in samples of the sampled triangles (above) that lie at
+/// least partly on the image, each counted at most as the image's area; 0
 /// when none does.
 double sampled_samples_per_triangle(const std::vector<Triangle>& triangles, const FrameVector<ScreenVertex>& screen,
                                     int rows, int columns);
