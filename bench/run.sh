@@ -9,9 +9,11 @@
 #   bench/run.sh accuracy [--quick] [phongrast_accuracy flags] docs/accuracy.md (plots into docs/images/)
 #   bench/run.sh llvmpipe [--quick] [bench_llvmpipe flags]    docs/llvmpipe.md: times and image agreement
 #   bench/run.sh goals [--quick] [--no-huge]                  ambient-only / full lighting, peak memory per scene
+#   bench/run.sh stages [--quick]                             where the time goes in the goals' usual misses
 #   bench/run.sh all [--quick] [--no-huge]                    the goals per scene class (a summary table each),
 #                                                             each mesh in every order of ORDERS, then llvmpipe,
-#                                                             goals, speed --steps and scaling (bench/run_all.sh)
+#                                                             goals, speed --steps, scaling and where the time
+#                                                             goes in the goals' usual misses (bench/run_all.sh)
 #
 # --quick runs a small subset of each, in seconds to a few minutes, to check
 # that everything works; its numbers are not for the docs. Without it the
@@ -31,7 +33,7 @@ python=/usr/bin/python3
 [ -x "$python" ] || python=python3
 
 usage() {
-  sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
 }
 
@@ -234,6 +236,46 @@ goals() {
   done
 }
 
+# Where the time goes in the cases furthest from a goal (docs/performance.md,
+# "What stands in the way"): each render stage's median (bench_speed_once
+# --stages), one process per case, and the shuffled mesh's stages against the
+# spatial one's (bench_mesh_order). The cases are the summary's usual misses,
+# fixed so that runs compare: the 512² scenes' Gouraud (spot), the seed's
+# Gouraud at 1 thread on 70k+ triangles (armadillo), ambient against full
+# lighting on 125k, and the 1.3M sphere's ns per triangle (not with --quick).
+where_time_goes() {
+  local quick=$1 passes
+  build bench_speed_once bench_mesh_order
+  local bin="$build/bench/bench_speed_once"
+  local cases="llvmpipe|spot|gouraud|exact|1|full|200
+llvmpipe|spot|gouraud|exact|2|full|200
+llvmpipe|armadillo|gouraud|seed|1|full|30
+ambient|icosphere-125k|phong|exact|1|ambient|20
+ambient|icosphere-125k|phong|exact|1|full|20
+ns per triangle|icosphere-1.3M|gouraud|exact|1|full|9"
+  echo "| goal | case | frame | stages: median ms per pass |"
+  echo "|---|---|---|---|"
+  while IFS='|' read -r goal scene shader mode threads lighting passes; do
+    [ "$quick" = --quick ] && [ "$scene" = icosphere-1.3M ] && continue
+    [ "$quick" = --quick ] && passes=5
+    local out stages frame
+    if ! out=$("$bin" --scene "$scene" --shader "$shader" --mode "$mode" --threads "$threads" --lighting "$lighting"         --repeat "$passes" --stages 2>/dev/null); then
+      echo "| $goal | $scene $shader $mode $lighting, $threads thread(s) | (skipped: mesh not found or run failed) | |"
+      continue
+    fi
+    stages=$(echo "$out" | sed -n 's/^stages, median ms per pass over [0-9]* passes: //p' | sed 's/ | /; /g')
+    frame=$(echo "$out" | sed -n 's/.*: median \([0-9.]*\) ms.*/\1 ms/p')
+    echo "| $goal | $scene $shader $mode $lighting, $threads thread(s) | $frame | $stages |"
+  done <<<"$cases"
+  echo
+  if [ "$quick" != --quick ]; then
+    echo "The shuffled mesh against the spatial one (goal: within 1.25x), orders interleaved in one process:"
+    echo
+    "$build/bench/bench_mesh_order" --scene icosphere-1.3M --threads 1 --renderer-only --repeat 9 --cpu-time --stages \
+      --orders spatial shuffled
+  fi
+}
+
 # Every measurement into its own file first, then the report: the summary
 # per scene class (bench/report.py summary), then the detailed tables.
 all() {
@@ -257,7 +299,7 @@ all() {
   : >"$part-llvmpipe.md"
   : >"$part-goals.md"
   for order in "${orders[@]}"; do
-    echo "run.sh all: 1/4 phongrast against llvmpipe, meshes in the $order order" >&2
+    echo "run.sh all: 1/5 phongrast against llvmpipe, meshes in the $order order" >&2
     { echo "### Meshes in the $order order"; echo; llvmpipe $quick $huge --order "$order"; echo; } >>"$part-llvmpipe.md"
     local suffix=""
     [ "$order" = generator ] || suffix="-$order"
@@ -265,16 +307,19 @@ all() {
   done
   loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
   for order in "${orders[@]}"; do
-    echo "run.sh all: 2/4 ambient-only against full lighting, peak memory, meshes in the $order order" >&2
+    echo "run.sh all: 2/5 ambient-only against full lighting, peak memory, meshes in the $order order" >&2
     goals $quick $huge --order "$order" >>"$part-goals.md"
     echo >>"$part-goals.md"
   done
   loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
-  echo "run.sh all: 3/4 speed steps" >&2
+  echo "run.sh all: 3/5 speed steps" >&2
   speed --steps $quick >"$part-steps.md"
   loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
-  echo "run.sh all: 4/4 scaling" >&2
+  echo "run.sh all: 4/5 scaling" >&2
   scaling --quick >"$part-scaling.md"
+  loads+=("$(cut -d' ' -f1-3 /proc/loadavg)")
+  echo "run.sh all: 5/5 where the time goes" >&2
+  where_time_goes "$quick" >"$part-stages.md"
   {
     echo "# phongrast speed report"
     echo
@@ -283,8 +328,8 @@ all() {
     echo
     echo "Ratios: phongrast's whole render over llvmpipe's frame plus its sort (section 1); ns per triangle:"
     echo "phongrast Gouraud exact (section 1) over the mesh's triangles, and times the threads; ambient and"
-    echo "memory: bench_goals, phongrast alone (section 2). Load average as sections 1-4 started:"
-    echo "${loads[0]}; ${loads[1]}; ${loads[2]}; ${loads[3]}."
+    echo "memory: bench_goals, phongrast alone (section 2); where the time goes in the usual misses: section 5."
+    echo "Load average as sections 1-5 started: ${loads[0]}; ${loads[1]}; ${loads[2]}; ${loads[3]}; ${loads[4]}."
     echo
     echo "Every scene in each mesh order of ORDERS (${orders[*]}; bench/mesh_orders.hpp): rows named \"(spatial)\""
     echo "or \"(shuffled)\" are the same mesh and picture, its vertices and faces in that order."
@@ -307,6 +352,10 @@ all() {
     echo
     cat "$part-scaling.md"
     echo
+    echo "## 5. Where the time goes (the goals' usual misses)"
+    echo
+    cat "$part-stages.md"
+    echo
     echo "- load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
   } | tee "$build/report.md"
   echo "report: $build/report.md" >&2
@@ -317,5 +366,8 @@ command=$1
 shift
 case "$command" in
   effects | speed | scaling | accuracy | llvmpipe | goals | all) "$command" "$@" ;;
+  stages)
+    [ $# -le 1 ] && { [ $# -eq 0 ] || [ "$1" = --quick ]; } || { echo "run.sh stages: expected --quick or nothing" >&2; exit 2; }
+    where_time_goes "${1:-}" ;;
   *) usage ;;
 esac
