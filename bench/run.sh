@@ -259,7 +259,8 @@ ns per triangle|icosphere-1.3M|gouraud|exact|1|full|9"
     [ "$quick" = --quick ] && [ "$scene" = icosphere-1.3M ] && continue
     [ "$quick" = --quick ] && passes=5
     local out stages frame
-    if ! out=$("$bin" --scene "$scene" --shader "$shader" --mode "$mode" --threads "$threads" --lighting "$lighting"         --repeat "$passes" --stages 2>/dev/null); then
+    if ! out=$("$bin" --scene "$scene" --shader "$shader" --mode "$mode" --threads "$threads" --lighting "$lighting" \
+        --repeat "$passes" --stages 2>/dev/null); then
       echo "| $goal | $scene $shader $mode $lighting, $threads thread(s) | (skipped: mesh not found or run failed) | |"
       continue
     fi
@@ -367,7 +368,10 @@ shift
 case "$command" in
   effects | speed | scaling | accuracy | llvmpipe | goals | all) "$command" "$@" ;;
   stages)
-    [ $# -le 1 ] && { [ $# -eq 0 ] || [ "$1" = --quick ]; } || { echo "run.sh stages: expected --quick or nothing" >&2; exit 2; }
+    if [ $# -gt 1 ] || { [ $# -eq 1 ] && [ "$1" != --quick ]; }; then
+      echo "run.sh stages: expected --quick or nothing" >&2
+      exit 2
+    fi
     where_time_goes "${1:-}" ;;
   *) usage ;;
 esac
